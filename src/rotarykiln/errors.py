@@ -1,0 +1,136 @@
+"""Error and warning types of rotarykiln.
+
+- :class:`InputError`: a bad value. The message names the field, the value and what is accepted,
+  on one line, e.g. ``kiln.diameter: -0.4 m is not > 0``.
+- :class:`ConvergenceError`: a solver failed. The message says where and by how much; the
+  ``diagnostics`` dict carries the numbers (iterations, residual norm, location).
+- :class:`OutOfRangeWarning`: a correlation or model used outside the range its source validated.
+"""
+
+from __future__ import annotations
+
+import warnings
+from typing import Any
+
+import numpy as np
+
+__all__ = [
+    "ConvergenceError",
+    "InputError",
+    "OutOfRangeWarning",
+    "check_positive",
+    "check_nonnegative",
+    "check_range",
+    "warn_out_of_range",
+]
+
+
+class InputError(ValueError):
+    """A value given by the user is not acceptable.
+
+    Parameters
+    ----------
+    field : str
+        Dotted path of the offending field (``"kiln.diameter"``) or argument name.
+    value : object
+        The value as given (a string with its unit is fine).
+    accepted : str
+        What would have been accepted, e.g. ``"> 0"`` or ``"in (0, 1)"``.
+    """
+
+    def __init__(self, field: str, value: Any = None, accepted: str = "", message: str = ""):
+        self.field = field
+        self.value = value
+        self.accepted = accepted
+        if not message:
+            message = (
+                f"{field}: {_fmt(value)} is not {accepted}" if accepted else f"{field}: {value}"
+            )
+        super().__init__(message)
+
+
+class ConvergenceError(RuntimeError):
+    """A solver did not converge.
+
+    Parameters
+    ----------
+    message : str
+        What failed, where and by how much.
+    **diagnostics
+        Numbers a caller may want: ``iterations``, ``residual``, ``location`` ...
+    """
+
+    def __init__(self, message: str, **diagnostics: Any):
+        self.diagnostics = diagnostics
+        if diagnostics:
+            details = ", ".join(f"{k}={_fmt(v)}" for k, v in diagnostics.items())
+            message = f"{message} ({details})"
+        super().__init__(message)
+
+
+class OutOfRangeWarning(UserWarning):
+    """A model or correlation is used outside the range its source validated."""
+
+
+def _fmt(value: Any) -> str:
+    if isinstance(value, float | np.floating):
+        return f"{value:.6g}"
+    if isinstance(value, np.ndarray):
+        return np.array2string(value, precision=6, threshold=6)
+    return str(value)
+
+
+def check_positive(field: str, value: Any, unit: str = "") -> None:
+    """Raise :class:`InputError` unless every element of ``value`` is finite and > 0."""
+    arr = np.asarray(value, dtype=float)
+    bad = ~np.isfinite(arr) | (arr <= 0)
+    if np.any(bad):
+        v = arr[bad].flat[0] if arr.ndim else float(arr)
+        raise InputError(field, f"{_fmt(float(v))}{' ' + unit if unit else ''}", "> 0")
+
+
+def check_nonnegative(field: str, value: Any, unit: str = "") -> None:
+    """Raise :class:`InputError` unless every element of ``value`` is finite and >= 0."""
+    arr = np.asarray(value, dtype=float)
+    bad = ~np.isfinite(arr) | (arr < 0)
+    if np.any(bad):
+        v = arr[bad].flat[0] if arr.ndim else float(arr)
+        raise InputError(field, f"{_fmt(float(v))}{' ' + unit if unit else ''}", ">= 0")
+
+
+def check_range(
+    field: str,
+    value: Any,
+    low: float,
+    high: float,
+    *,
+    closed_low: bool = False,
+    closed_high: bool = False,
+    unit: str = "",
+) -> None:
+    """Raise :class:`InputError` unless ``low < value < high`` (ends closed on request)."""
+    arr = np.asarray(value, dtype=float)
+    ok_low = arr >= low if closed_low else arr > low
+    ok_high = arr <= high if closed_high else arr < high
+    bad = ~np.isfinite(arr) | ~ok_low | ~ok_high
+    if np.any(bad):
+        v = arr[bad].flat[0] if arr.ndim else float(arr)
+        interval = f"in {'[' if closed_low else '('}{low:g}, {high:g}{']' if closed_high else ')'}"
+        raise InputError(field, f"{_fmt(float(v))}{' ' + unit if unit else ''}", interval)
+
+
+def warn_out_of_range(what: str, value: Any, low: float, high: float, source: str) -> bool:
+    """Warn with :class:`OutOfRangeWarning` if any of ``value`` lies outside [low, high].
+
+    Returns True when a warning was issued.
+    """
+    arr = np.asarray(value, dtype=float)
+    if np.any((arr < low) | (arr > high)):
+        warnings.warn(
+            f"{what} = {_fmt(arr if arr.ndim else float(arr))} is outside the range "
+            f"[{low:g}, {high:g}] validated by {source}",
+            OutOfRangeWarning,
+            stacklevel=3,
+        )
+        return True
+    return False

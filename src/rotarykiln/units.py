@@ -1,0 +1,173 @@
+"""Quantities with units at the edges, SI floats inside.
+
+Case files and the command line give physical values as strings with units ("1.5 rpm",
+"0.8 deg", "62 kg/h", "0.406 m", "1100 degC"). :func:`to_si` converts such a string once to an
+SI float for a named *kind* of quantity, and raises :class:`~rotarykiln.errors.InputError` naming
+the field when the string is not a quantity of that kind.
+
+Kinds and their SI units are listed in :data:`KINDS`. Angles are radians; rotation rates rad/s;
+temperatures kelvin. A slope may also be given as a grade ("3 %", "0.05 m/m"), converted with
+arctan.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import pint
+
+from rotarykiln.errors import InputError
+
+__all__ = ["KINDS", "Kind", "ureg", "to_si", "format_quantity"]
+
+ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+ureg.define("rpm_ = revolution / minute")  # "rpm" already exists; keep an alias harmless
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A kind of physical quantity: its human name, SI unit and pint dimensionality."""
+
+    name: str
+    si: str
+
+    @property
+    def dimensionality(self):
+        return ureg.Quantity(1.0, self.si).dimensionality
+
+
+KINDS: dict[str, Kind] = {
+    k.name: k
+    for k in [
+        Kind("length", "m"),
+        Kind("area", "m**2"),
+        Kind("volume", "m**3"),
+        Kind("time", "s"),
+        Kind("mass", "kg"),
+        Kind("angle", "rad"),
+        Kind("rotation rate", "rad/s"),
+        Kind("velocity", "m/s"),
+        Kind("mass flow", "kg/s"),
+        Kind("volumetric flow", "m**3/s"),
+        Kind("temperature", "K"),
+        Kind("density", "kg/m**3"),
+        Kind("pressure", "Pa"),
+        Kind("power", "W"),
+        Kind("power per length", "W/m"),
+        Kind("heat flux", "W/m**2"),
+        Kind("heat transfer coefficient", "W/m**2/K"),
+        Kind("thermal conductivity", "W/m/K"),
+        Kind("specific heat", "J/kg/K"),
+        Kind("specific energy", "J/kg"),
+        Kind("molar energy", "J/mol"),
+        Kind("diffusivity", "m**2/s"),
+        Kind("frequency", "1/s"),
+        Kind("fraction", "dimensionless"),
+    ]
+}
+
+_ANGLE_UNITS = ("degree", "radian", "arcminute", "arcsecond", "revolution", "turn", "gradian")
+
+
+@lru_cache(maxsize=64)
+def _kind_of_dimensionality(dim_str: str) -> str:
+    for kind in KINDS.values():
+        if str(kind.dimensionality) == dim_str and kind.name not in ("angle", "frequency"):
+            return kind.name
+    return f"a quantity of dimension {dim_str}"
+
+
+def _describe(q: pint.Quantity) -> str:
+    name = _kind_of_dimensionality(str(q.dimensionality))
+    if name.startswith("a quantity"):
+        return name
+    article = "an" if name[0] in "aeiou" else "a"
+    return f"{article} {name}"
+
+
+def _parse(field: str, text: str) -> pint.Quantity:
+    try:
+        q = ureg.Quantity(text.strip())
+    except Exception:  # pint raises many types for garbage: report them all the same way
+        raise InputError(
+            field,
+            f'"{text}"',
+            accepted="",
+            message=f'{field}: "{text}" is not a quantity with a unit',
+        ) from None
+    if not isinstance(q.magnitude, int | float) or not math.isfinite(float(q.magnitude)):
+        raise InputError(field, message=f'{field}: "{text}" is not a finite number with a unit')
+    return q
+
+
+def to_si(field: str, value: str | float | int, kind: str) -> float:
+    """Convert ``value`` (a string with unit, or a bare number already in SI) to an SI float.
+
+    Parameters
+    ----------
+    field : str
+        Name used in error messages (``"operation.speed"``).
+    value : str or number
+        ``"1.5 rpm"``; a bare number is taken as SI, except for angles, which need a unit.
+    kind : str
+        A key of :data:`KINDS`.
+
+    Examples
+    --------
+    >>> round(to_si("speed", "60 rpm", "rotation rate"), 6)
+    6.283185
+    >>> to_si("T", "1100 degC", "temperature")
+    1373.15
+    >>> round(to_si("slope", "2 deg", "angle"), 6)
+    0.034907
+    >>> to_si("speed", "3 m", "rotation rate")
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: speed: "3 m" is a length, expected a rotation rate
+    """
+    target = KINDS[kind]
+    if isinstance(value, bool):
+        raise InputError(field, message=f"{field}: {value!r} is not a quantity")
+    if isinstance(value, int | float):
+        if not math.isfinite(value):
+            raise InputError(field, message=f"{field}: {value} is not a finite number")
+        if kind == "angle":
+            raise InputError(
+                field,
+                message=f'{field}: bare number {value} needs a unit (e.g. "{value} deg", "{value} rad"'
+                ', or "% " / "m/m" for a grade)',
+            )
+        return float(value)
+    if not isinstance(value, str):
+        raise InputError(field, message=f"{field}: {value!r} is not a quantity with a unit")
+    q = _parse(field, value)
+    if kind == "angle":
+        units = str(q.units)
+        if q.dimensionless and not any(a in units for a in _ANGLE_UNITS):
+            if q.unitless:
+                raise InputError(
+                    field,
+                    message=f'{field}: "{value}" needs a unit (deg, rad, or % / m/m for a grade)',
+                )
+            return math.atan(float(q.to("dimensionless").magnitude))  # a grade, rise over run
+    if q.dimensionality != target.dimensionality:
+        raise InputError(
+            field,
+            message=f'{field}: "{value}" is {_describe(q)}, expected {_article(target.name)} {target.name}',
+        )
+    return float(q.to(target.si).magnitude)
+
+
+def _article(name: str) -> str:
+    return "an" if name[0] in "aeiou" else "a"
+
+
+def format_quantity(value: float, kind: str, unit: str | None = None, digits: int = 4) -> str:
+    """Format an SI value in ``unit`` (default: the kind's SI unit), e.g. ``"66.9 rpm"``."""
+    target = KINDS[kind]
+    q = ureg.Quantity(value, target.si)
+    if unit:
+        q = q.to(unit)
+    return f"{q.magnitude:.{digits}g} {unit or target.si}"
