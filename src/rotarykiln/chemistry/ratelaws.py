@@ -1,0 +1,326 @@
+"""Named rate laws usable from reaction YAML files, evaluated on many kiln cells at once.
+
+Each rate law maps a :class:`RateContext` (the state of ``n`` cells) and its parameters to the
+consumption rate of the reaction's basis species, kg/(s m), shape ``(n,)``. The physics lives in
+:mod:`~rotarykiln.chemistry.drying`, :mod:`~rotarykiln.chemistry.calcination`,
+:mod:`~rotarykiln.chemistry.activation` and :mod:`~rotarykiln.chemistry.pyrolysis`; this module only
+adapts them to the cell state. Laws and the extra inputs they read:
+
+=========================  ===========================================  ========================
+law                        model                                        cell inputs needed
+=========================  ===========================================  ========================
+ahmad_drying               critical-moisture drying (seed 004)          drying_conductance W/mK
+heat_limited_drying        all bed heat evaporates at T_boil            bed_heat_input W/m
+luisser_calcination        Luisser rate (seed 004), no equilibrium      bed_mass_flow_in
+equilibrium_calcination    Luisser x (1 - p_CO2/p_eq), Baker p_eq       bed_mass_flow_in, p_CO2
+ortiz_activation           Ortiz et al. steam activation, onset T       steam_mass_flow kg/s
+wen_yen                    kerogen 5-rate scheme, step 1..5             bed_mass_flow_in (3-5)
+arrhenius                  A (T/T_ref)^b exp(-E/RT) m'_basis prod p^n   (none)
+=========================  ===========================================  ========================
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rotarykiln.chemistry.activation import onset_window, ortiz_activation_rate
+from rotarykiln.chemistry.calcination import R_GAS, calcination_rate_with_equilibrium
+from rotarykiln.chemistry.drying import (
+    LATENT_HEAT_AHMAD,
+    ahmad_critical_moisture_drying_rate,
+    heat_limited_drying_rate,
+)
+from rotarykiln.chemistry.pyrolysis import _wen_yen_k
+from rotarykiln.errors import InputError
+
+__all__ = ["RateLaw", "RateContext", "RATE_LAWS", "register_rate_law", "MOISTURE"]
+
+MOISTURE = "H2O(l)"
+ATM = 101325.0
+
+
+class RateContext:
+    """The state of ``n`` cells as rate laws see it (built by the mechanism).
+
+    Attributes
+    ----------
+    T_bed, T_gas : ndarray
+        K, shape (n,).
+    n : int
+    """
+
+    def __init__(self, state, species):
+        self.state = state
+        self.species = species
+        self.T_bed = state.T_bed
+        self.T_gas = state.T_gas
+        self.n = state.T_bed.shape[0]
+        flows = state.bed_mass_flow
+        total = np.zeros(self.n)
+        for v in flows.values():
+            total = total + v
+        self._total = total
+        with np.errstate(divide="ignore", invalid="ignore"):
+            self._holdup_per_flow = np.where(total > 0, state.bed_mass_per_length / total, 0.0)
+
+    def flow(self, name: str) -> np.ndarray:
+        """Bed mass flow of species ``name``, kg/s (0 if absent)."""
+        v = self.state.bed_mass_flow.get(name)
+        return np.zeros(self.n) if v is None else v
+
+    def dry_flow(self) -> np.ndarray:
+        """Bed mass flow without moisture, kg/s."""
+        return self._total - self.flow(MOISTURE)
+
+    def holdup(self, name: str) -> np.ndarray:
+        """Mass of bed species ``name`` per kiln length, kg/m (all bed species move together)."""
+        return self.flow(name) * self._holdup_per_flow
+
+    def flow_in(self, name: str, law: str) -> float:
+        """Inlet bed mass flow of ``name``, kg/s: the reference of conversions."""
+        ref = self.state.bed_mass_flow_in
+        if name not in ref:
+            raise InputError(
+                f"cell_state.bed_mass_flow_in.{name}",
+                "missing",
+                f"given (rate law {law} needs the inlet flow of {name} as conversion reference)",
+            )
+        return ref[name]
+
+    def p(self, name: str) -> np.ndarray:
+        """Partial pressure of gas species ``name`` over the bed, Pa (0 if absent)."""
+        v = self.state.partial_pressure.get(name)
+        return np.zeros(self.n) if v is None else v
+
+    def input(self, name: str, law: str) -> np.ndarray:
+        """An extra cell input (``steam_mass_flow``, ``drying_conductance``, ``bed_heat_input``)."""
+        if name not in self.state.inputs:
+            raise InputError(
+                f"cell_state.inputs.{name}", "missing", f"given (needed by rate law {law})"
+            )
+        return self.state.inputs[name]
+
+
+@dataclass(frozen=True)
+class RateLaw:
+    """A named rate law: defaults of its parameters and the function evaluating it."""
+
+    name: str
+    defaults: dict
+    func: Callable = field(repr=False)
+    description: str = ""
+    choices: dict = field(default_factory=dict)
+
+    def validate_params(self, given: Mapping, where: str, basis: str) -> dict:
+        """Merge ``given`` into the defaults; :class:`InputError` on unknown or bad values."""
+        params = dict(self.defaults)
+        for k, v in given.items():
+            if k not in self.defaults:
+                raise InputError(
+                    f"{where}.{k}",
+                    "given",
+                    f"a parameter of {self.name} ({', '.join(self.defaults) or 'none'})",
+                )
+            d = self.defaults[k]
+            if k in self.choices:
+                if v not in self.choices[k]:
+                    raise InputError(
+                        f"{where}.{k}", v, f"one of {', '.join(map(str, self.choices[k]))}"
+                    )
+                params[k] = v
+            elif isinstance(d, bool):
+                if not isinstance(v, bool):
+                    raise InputError(f"{where}.{k}", v, "true or false")
+                params[k] = v
+            elif isinstance(d, dict):
+                if not isinstance(v, Mapping):
+                    raise InputError(f"{where}.{k}", v, "a mapping species -> order")
+                params[k] = {str(a): float(b) for a, b in v.items()}
+            else:
+                if v is None and d is None:
+                    continue
+                try:
+                    fv = float(v)
+                except (TypeError, ValueError):
+                    raise InputError(f"{where}.{k}", v, "a number (SI units)") from None
+                if not np.isfinite(fv):
+                    raise InputError(f"{where}.{k}", v, "finite")
+                params[k] = fv
+        for k in ("A", "K_e", "latent_heat", "critical_moisture"):
+            if k in params and params[k] is not None and params[k] <= 0:
+                raise InputError(f"{where}.{k}", params[k], "> 0")
+        if self.name == "wen_yen":
+            step = params["step"]
+            if step not in (1.0, 2.0, 3.0, 4.0, 5.0):
+                raise InputError(f"{where}.step", step, "one of 1, 2, 3, 4, 5")
+            expected = "bitumen" if step == 2 else "kerogen"
+            if basis != expected:
+                raise InputError(
+                    f"{where}.step",
+                    int(step),
+                    f"consistent with basis {basis} (step 2 consumes bitumen, others kerogen)",
+                )
+        return params
+
+
+RATE_LAWS: dict[str, RateLaw] = {}
+
+
+def register_rate_law(
+    name: str, defaults: Mapping, description: str = "", choices: Mapping | None = None
+):
+    """Decorator registering ``func(ctx, basis, params) -> ndarray`` as a named rate law."""
+
+    def deco(func):
+        RATE_LAWS[name] = RateLaw(name, dict(defaults), func, description, dict(choices or {}))
+        return func
+
+    return deco
+
+
+def _conversion_ratio(ctx: RateContext, basis: str, law: str) -> np.ndarray:
+    """1 - x = Q/Q_in, clipped to [0, 1]."""
+    q_in = ctx.flow_in(basis, law)
+    if q_in <= 0:
+        return np.zeros(ctx.n)
+    return np.clip(ctx.flow(basis) / q_in, 0.0, 1.0)
+
+
+@register_rate_law(
+    "ahmad_drying",
+    {"critical_moisture": 0.1, "latent_heat": LATENT_HEAT_AHMAD, "cap": True},
+    "Ahmad (2006) critical-moisture drying",
+)
+def _ahmad_drying(ctx, basis, p):
+    return np.asarray(
+        ahmad_critical_moisture_drying_rate(
+            ctx.input("drying_conductance", "ahmad_drying"),
+            ctx.T_gas,
+            ctx.T_bed,
+            ctx.flow(basis),
+            ctx.dry_flow(),
+            p["critical_moisture"],
+            p["latent_heat"],
+            p["cap"],
+        ),
+        dtype=float,
+    ) * np.ones(ctx.n)
+
+
+@register_rate_law(
+    "heat_limited_drying",
+    {"latent_heat": LATENT_HEAT_AHMAD, "T_boil": 373.15, "width": 1.0},
+    "heat-transfer-limited drying at the boiling point",
+)
+def _heat_limited_drying(ctx, basis, p):
+    return np.asarray(
+        heat_limited_drying_rate(
+            ctx.input("bed_heat_input", "heat_limited_drying"),
+            ctx.T_bed,
+            ctx.flow(basis),
+            p["latent_heat"],
+            p["T_boil"],
+            p["width"],
+        ),
+        dtype=float,
+    ) * np.ones(ctx.n)
+
+
+def _luisser_mass_rate(ctx, basis, p, law):
+    ratio = _conversion_ratio(ctx, basis, law)
+    k = p["A"] * np.exp(-p["E"] / (R_GAS * ctx.T_bed))
+    m = ctx.holdup(basis)
+    # m' k (1-x)^n / (1-x): the hold-up already carries one power of (1 - x)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f = np.where(ratio > 0, np.where(ratio > 0, ratio, 1.0) ** (p["order"] - 1.0), 0.0)
+    return k * m * f
+
+
+@register_rate_law(
+    "luisser_calcination",
+    {"A": 9.8e4, "E": 142000.0, "order": 0.5},
+    "Luisser (2004) calcination rate quoted by Ahmad (2006), no equilibrium",
+)
+def _luisser(ctx, basis, p):
+    return _luisser_mass_rate(ctx, basis, p, "luisser_calcination")
+
+
+@register_rate_law(
+    "equilibrium_calcination",
+    {"A": 9.8e4, "E": 142000.0, "order": 0.5, "equilibrium": "baker"},
+    "Luisser rate times (1 - p_CO2/p_eq)",
+    choices={"equilibrium": ("baker", "garcia_labiano")},
+)
+def _equilibrium_calcination(ctx, basis, p):
+    base = _luisser_mass_rate(ctx, basis, p, "equilibrium_calcination")
+    # reuse the public function for the driving force (conversion 0: pure driving-force factor)
+    drive = calcination_rate_with_equilibrium(
+        ctx.T_bed,
+        np.zeros(ctx.n),
+        ctx.p("CO2"),
+        A=1.0,
+        E=0.0,
+        order=0.0,
+        equilibrium=p["equilibrium"],
+    )
+    return base * drive
+
+
+@register_rate_law(
+    "ortiz_activation",
+    {"K_e": 6.005, "T_act": 8033.0, "T_on": 1073.0, "T_off": None, "width": 0.0},
+    "Ortiz et al. (2003a) steam activation of charcoal",
+)
+def _ortiz(ctx, basis, p):
+    return np.asarray(
+        ortiz_activation_rate(
+            ctx.T_bed,
+            ctx.input("steam_mass_flow", "ortiz_activation"),
+            ctx.holdup(basis),
+            p["K_e"],
+            p["T_act"],
+            p["T_on"],
+            p["T_off"],
+            p["width"],
+        ),
+        dtype=float,
+    ) * np.ones(ctx.n)
+
+
+@register_rate_law("wen_yen", {"step": 1.0}, "Wen & Yen (1977) kerogen scheme, one step")
+def _wen_yen(ctx, basis, p):
+    step = int(p["step"])
+    k = _wen_yen_k(ctx.T_bed)[step - 1]
+    if step in (1, 2):
+        return k * ctx.holdup(basis)
+    # steps 3-5: k x1 x2 with x2 = bitumen / initial kerogen; in hold-up: k m'_K x2
+    q_in = ctx.flow_in("kerogen", "wen_yen")
+    x2 = ctx.flow("bitumen") / q_in if q_in > 0 else np.zeros(ctx.n)
+    return k * ctx.holdup("kerogen") * x2
+
+
+@register_rate_law(
+    "arrhenius",
+    {
+        "A": 1.0,
+        "E": 0.0,
+        "b": 0.0,
+        "T_ref": 1.0,
+        "temperature": "bed",
+        "T_on": 0.0,
+        "pressure_orders": {},
+    },
+    "r = A (T/T_ref)^b exp(-E/(R T)) m'_basis prod (p_j/1 atm)^n_j, for T >= T_on",
+    choices={"temperature": ("bed", "gas")},
+)
+def _arrhenius(ctx, basis, p):
+    T = ctx.T_bed if p["temperature"] == "bed" else ctx.T_gas
+    r = p["A"] * (T / p["T_ref"]) ** p["b"] * np.exp(-p["E"] / (R_GAS * T)) * ctx.holdup(basis)
+    for gas, order in p["pressure_orders"].items():
+        r = r * np.maximum(ctx.p(gas) / ATM, 0.0) ** order
+    if p["T_on"] > 0:
+        r = r * onset_window(T, p["T_on"])
+    return r
