@@ -10,6 +10,7 @@ from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.chemistry.species import check_mass_fractions
 from rotarykiln.units import to_si
 
+RPM = 2 * 3.141592653589793 / 60  # rad/s per rpm
 CASES = Path(rotarykiln.__file__).parent / "cases"
 
 
