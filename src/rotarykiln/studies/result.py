@@ -1,0 +1,186 @@
+"""The table of a sweep, its files and its plot."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from rotarykiln.errors import InputError
+from rotarykiln.studies.design import CaseSpec, si_value
+from rotarykiln.studies.io import (
+    parquet_available,
+    save_figure_atomic,
+    write_csv_atomic,
+    write_parquet_atomic,
+)
+
+__all__ = ["SweepResult", "SI_SUFFIX"]
+
+#: Suffix of the column holding the SI value of a swept path.
+SI_SUFFIX = " [SI]"
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """Results of a sweep: one row per case.
+
+    Attributes
+    ----------
+    frame : pandas.DataFrame
+        Columns ``case_id``, ``group``, each swept path (value as given) and ``<path> [SI]``,
+        the outputs, ``error`` ("" when the case ran) and ``elapsed_s``.
+    parameters : tuple of str
+        Swept paths.
+    outputs : tuple of str
+        Output names (union over cases).
+    wall_time : float
+        Wall-clock time of the whole sweep, s.
+    executor : str
+    """
+
+    frame: pd.DataFrame
+    parameters: tuple[str, ...]
+    outputs: tuple[str, ...]
+    wall_time: float = 0.0
+    executor: str = ""
+    meta: dict = field(default_factory=dict)
+
+    @classmethod
+    def from_rows(cls, rows: Sequence[dict], cases: Sequence[CaseSpec], wall_time=0.0, executor=""):
+        by_id = {c.case_id: c for c in cases}
+        params: list[str] = []
+        for c in cases:
+            for p in c.values:
+                if p not in params:
+                    params.append(p)
+        outputs: list[str] = []
+        for r in rows:
+            for k in r["outputs"]:
+                if k not in outputs:
+                    outputs.append(k)
+        clash = [
+            o for o in outputs if o in params or o in ("case_id", "group", "error", "elapsed_s")
+        ]
+        if clash:
+            raise InputError(
+                "sweep.outputs", clash[0], "an output name distinct from parameters and columns"
+            )
+        records = []
+        for r in sorted(rows, key=lambda r: r["case_id"]):
+            spec = by_id[r["case_id"]]
+            rec = {"case_id": r["case_id"], "group": r["group"]}
+            for p in params:
+                v = spec.values.get(p)
+                rec[p] = v
+                rec[p + SI_SUFFIX] = si_value(v) if p in spec.values else np.nan
+            for o in outputs:
+                rec[o] = r["outputs"].get(o)
+            rec["error"] = r["error"]
+            rec["elapsed_s"] = r["elapsed_s"]
+            records.append(rec)
+        frame = pd.DataFrame.from_records(records)
+        return cls(frame, tuple(params), tuple(outputs), wall_time, executor)
+
+    # ---------------------------------------------------------------------------------------
+    def to_frame(self) -> pd.DataFrame:
+        return self.frame.copy()
+
+    @property
+    def n_failed(self) -> int:
+        return int((self.frame["error"] != "").sum())
+
+    @property
+    def failed(self) -> pd.DataFrame:
+        """Rows of cases that failed (with their error message)."""
+        return self.frame[self.frame["error"] != ""]
+
+    def write(self, out_dir, name: str = "sweep", parquet: bool | None = None) -> list[Path]:
+        """Write ``<name>.csv`` (and ``<name>.parquet`` if possible) atomically; returns paths.
+
+        Parameters
+        ----------
+        out_dir : path
+        name : str
+        parquet : bool or None
+            None: write Parquet only if pyarrow/fastparquet is importable; True: required.
+        """
+        out = Path(out_dir)
+        paths = [write_csv_atomic(self.frame, out / f"{name}.csv")]
+        if parquet is None:
+            parquet = parquet_available()
+        elif parquet and not parquet_available():
+            raise InputError("sweep.parquet", True, "possible: install pyarrow for Parquet output")
+        if parquet:
+            frame = self.frame.copy()
+            for p in self.parameters:  # values as given may mix numbers and strings
+                frame[p] = frame[p].astype(str)
+            paths.append(write_parquet_atomic(frame, out / f"{name}.parquet"))
+        return paths
+
+    def plot(self, outputs: Sequence[str] | None = None, parameters: Sequence[str] | None = None):
+        """Outputs against each swept parameter; returns the Figure.
+
+        One column of panels per parameter, one row per output. For one-at-a-time designs each
+        panel shows the cases of that parameter plus the base case; for grids with several
+        parameters, one line per combination of the other parameters.
+        """
+        import matplotlib.pyplot as plt
+
+        outs = list(outputs or self.outputs)
+        pars = list(parameters or self.parameters)
+        for o in outs:
+            if o not in self.outputs:
+                raise InputError("plot.outputs", o, f"one of {', '.join(self.outputs)}")
+        for p in pars:
+            if p not in self.parameters:
+                raise InputError("plot.parameters", p, f"one of {', '.join(self.parameters)}")
+        fig, axes = plt.subplots(
+            len(outs),
+            len(pars),
+            figsize=(3.2 * len(pars) + 0.8, 2.6 * len(outs) + 0.6),
+            squeeze=False,
+        )
+        ok = self.frame[self.frame["error"] == ""]
+        oat = set(self.frame["group"]) - {"grid"}
+        for j, p in enumerate(pars):
+            if oat:
+                sub = ok[ok["group"] == p]
+                base = ok[ok["group"] == "base"]
+                groups = [("", sub)]
+            else:
+                others = [q for q in self.parameters if q != p]
+                groups = list(ok.groupby(others, dropna=False)) if others else [("", ok)]
+                base = None
+            for i, o in enumerate(outs):
+                ax = axes[i][j]
+                for label, g in groups:
+                    x = g[p + SI_SUFFIX].to_numpy(float)
+                    y = pd.to_numeric(g[o], errors="coerce").to_numpy(float)
+                    order = np.argsort(x)
+                    ax.plot(x[order], y[order], "o-", label=str(label) if label != "" else None)
+                if base is not None and len(base):
+                    ax.axhline(
+                        pd.to_numeric(base[o], errors="coerce").iloc[0], color="grey", ls=":", lw=1
+                    )
+                if i == len(outs) - 1:
+                    ax.set_xlabel(f"{p} [SI]")
+                if j == 0:
+                    ax.set_ylabel(o)
+                if len(groups) > 1 and i == 0:
+                    ax.legend(fontsize="x-small")
+        fig.tight_layout()
+        return fig
+
+    def save_plot(self, path, **kwargs) -> Path:
+        """Save :meth:`plot` atomically to ``path`` (PNG by suffix); returns the path."""
+        import matplotlib.pyplot as plt
+
+        fig = self.plot(**kwargs)
+        try:
+            return save_figure_atomic(fig, path, dpi=100)
+        finally:
+            plt.close(fig)
