@@ -46,8 +46,10 @@ for name, pco2, label in [
     x = res.conversion("CaCO3")
     i5 = np.argmax(x > 0.01)
     i99 = np.argmax(x > 0.99)
-    print(f"{label}: X > 1 % at z = {res.z[i5]:.2f} m (T = {res.T_bed[i5]:.0f} K), "
-          f"X > 99 % at z = {res.z[i99]:.2f} m, X_out = {x[-1]:.5f}")
+    print(
+        f"{label}: X > 1 % at z = {res.z[i5]:.2f} m (T = {res.T_bed[i5]:.0f} K), "
+        f"X > 99 % at z = {res.z[i99]:.2f} m, X_out = {x[-1]:.5f}"
+    )
     ax.plot(res.z, x, label=label)
 ax2 = ax.twinx()
 ax2.plot(zT, TT, "k:", lw=1)
@@ -63,7 +65,8 @@ plt.close(fig)
 T = np.linspace(950.0, 1300.0, 100)
 fig, ax = plt.subplots(figsize=(5.0, 3.4))
 ax.semilogy(T, baker_co2_equilibrium_pressure(T) / 101325, label="Baker (1962)")
-ax.semilogy(T, garcia_labiano_co2_equilibrium_pressure(T) / 101325, "--", label="Garcia-Labiano (2002)")
+p_gl = garcia_labiano_co2_equilibrium_pressure(T) / 101325
+ax.semilogy(T, p_gl, "--", label="Garcia-Labiano (2002)")
 ax.axhline(1.0, color="grey", lw=0.8)
 ax.axvline(1173.6, color="grey", lw=0.8)
 ax.set_xlabel("T [K]")
@@ -74,17 +77,20 @@ fig.savefig(OUT / "chemistry_co2_equilibrium.png", dpi=90)
 plt.close(fig)
 
 # 3. segregated flow vs plug flow over a tanks-in-series RTD (N = 10 and 40). With the hot
-# profile above calcination is complete either way; a colder kiln (peak 880 K, Luisser kinetics are fast) leaves CaCO3
-# unconverted and shows the RTD effect.
+# profile above calcination is complete either way; a colder kiln (peak 880 K, Luisser kinetics
+# are fast) leaves CaCO3 unconverted and shows the RTD effect.
 mech = Mechanism.builtin("calcination_luisser")
-for label, prof in [("hot", (zT, TT)), ("cold", (zT, np.array([550.0, 750.0, 820.0, 860.0, 880.0])))]:
+T_cold = np.array([550.0, 750.0, 820.0, 860.0, 880.0])
+for label, prof in [("hot", (zT, TT)), ("cold", (zT, T_cold))]:
     for N in (10, 40):
         E = lambda t, N=N: (N / t_res) ** N * t ** (N - 1) * np.exp(-N * t / t_res) / gamma(N)  # noqa: E731
         res = kiln_segregated_conversion(
             mech, {"CaCO3": feed["CaCO3"]}, "CaCO3", L, E, prof, t_max=4 * t_res, n=2001, n_tau=30
         )
-        print(f"{label} profile, tanks-in-series N = {N}: plug X = {res.plug:.5f}, "
-              f"segregated X = {res.segregated:.5f}")
+        print(
+            f"{label} profile, tanks-in-series N = {N}: plug X = {res.plug:.5f}, "
+            f"segregated X = {res.segregated:.5f}"
+        )
         if label == "cold" and N == 10:
             ax = res.plot()
             ax.set_title("cold profile, tanks-in-series N = 10", fontsize="small")
@@ -97,6 +103,12 @@ for label, prof in [("hot", (zT, TT)), ("cold", (zT, np.array([550.0, 750.0, 820
 case = builtin_case("charcoal_activation")
 case["chemistry"]["reaction_zone_temperature"] = "1150 K"
 sweep = run_sweep(ortiz_isothermal_burn_off, case, ahmad_chapter5_design(), max_workers=2)
-print("chapter-5 stand-in sweep:", len(sweep.frame), "cases,", sweep.n_failed, "failed,",
-      f"{sweep.wall_time:.2f} s")
+print(
+    "chapter-5 stand-in sweep:",
+    len(sweep.frame),
+    "cases,",
+    sweep.n_failed,
+    "failed,",
+    f"{sweep.wall_time:.2f} s",
+)
 sweep.save_plot(OUT / "studies_chapter5_standin.png", outputs=["burn_off"])
