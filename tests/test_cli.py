@@ -109,3 +109,25 @@ def test_console_entry_point_usage_error_exit_code():
     )
     assert proc.returncode == 2
     assert "Traceback" not in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize(
+    ("line", "message"),
+    [
+        ("kiln: {length: 5 m, diameter: -0.4 m}", "kiln.diameter: -0.4 m is not > 0"),
+        ("kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: 3 m}", '"3 m" is a length'),
+        (
+            "kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: -2 rpm}",
+            "speed: -2 rpm is not > 0",
+        ),
+        ("kiln: {length: 5 m, diameter: 0.4 m}\nbed: {fill: 1}", "bed.fill: 1 is not in (0, 1)"),
+    ],
+)
+def test_case_value_errors_through_cli(capsys, tmp_path, line, message):
+    p = tmp_path / "c.yaml"
+    if "operation" not in line:
+        line += "\noperation: {speed: 2 rpm}"
+    p.write_text(line + "\n")
+    code, _, err = run_cli(capsys, "run", str(p))
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1 and message in err
