@@ -43,6 +43,12 @@ from rotarykiln.units import to_si
 __all__ = [
     "Angle",
     "Bed",
+    "Burner",
+    "Heat",
+    "HeatClosures",
+    "HeatGas",
+    "HeatMeasurements",
+    "LiningLayer",
     "Case",
     "Density",
     "Fraction",
@@ -126,6 +132,7 @@ def quantity(
 
 
 Length = quantity("length", gt=0)
+Position = quantity("length", ge=0)
 Angle = quantity("angle", ge=-math.pi / 2, le=math.pi / 2, shown="in [-90, 90] deg")
 RotationRate = quantity("rotation rate", gt=0)
 MassFlow = quantity("mass flow", ge=0)
@@ -184,6 +191,75 @@ class Bed(Section):
     fill: FillFraction
 
 
+class LiningLayer(Section):
+    """One lining layer of the ``heat`` section: a library material and a thickness."""
+
+    material: str
+    thickness: Length
+    absent: list[tuple[Position, Position]] = []
+
+
+class Burner(Section):
+    """Fuel and air burnt completely; the heat is released along a flame inside the kiln."""
+
+    fuel: str = "CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"
+    fuel_flow: MassFlow
+    air_flow: MassFlow
+    temperature: Temperature = 298.15
+    flame_start: Position = 0.0
+    flame_length: Length = 1.0
+
+
+class HeatGas(Section):
+    """Inlet gas of the ``heat`` section: flow, temperature and composition (mole fractions)."""
+
+    flow: MassFlow | None = None
+    inlet_temperature: Temperature | None = None
+    composition: str = "O2:0.2095, N2:0.7808, AR:0.0097"
+
+
+class HeatClosures(Section):
+    """Closure names of the heat model (see docs/heat.md)."""
+
+    gas_wall: str = "tscheng1979"
+    gas_bed: str = "tscheng1979"
+    covered_wall: str = "li2005"
+    radiation: bool = True
+    gas_emissivity: str | float = "johansson2011"
+    bed_conductivity: str = "given"
+
+
+class HeatMeasurements(Section):
+    """Measured profiles to overlay on the figure and score the solution against."""
+
+    z_gas: list[Position] = []
+    t_gas: list[Temperature] = []
+    z_bed: list[Position] = []
+    t_bed: list[Temperature] = []
+    z_wall: list[Position] = []
+    t_wall: list[Temperature] = []
+    wall_interface: int = 0
+
+
+class Heat(Section):
+    """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md."""
+
+    solid: str = "sand"
+    solid_inlet_temperature: Temperature = 298.15
+    fill: FillFraction | list[FillFraction] | None = None
+    counter_current: bool = True
+    gas: HeatGas = HeatGas()
+    burner: Burner | None = None
+    lining: list[LiningLayer]
+    ambient_temperature: Temperature = 298.15
+    wind_speed: Velocity = 0.0
+    wall_emissivity: Fraction | None = None
+    shell_emissivity: Fraction | None = None
+    cells: int = 100
+    closures: HeatClosures = HeatClosures()
+    measurements: HeatMeasurements | None = None
+
+
 class Case(Section):
     """A complete case file."""
 
@@ -193,6 +269,7 @@ class Case(Section):
     operation: Operation
     material: Material = Material()
     bed: Bed | None = None
+    heat: Heat | None = None
 
 
 def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:
