@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from rotarykiln.errors import check_positive, check_range, warn_out_of_range
+from rotarykiln.heat._util import span
 
 __all__ = [
     "tscheng_watkinson_gas_wall_nusselt",
@@ -85,8 +86,8 @@ def _check_tw(reynolds, rot_reynolds, check):
     if check:
         check_positive("reynolds", reynolds)
         check_positive("rotational_reynolds", rot_reynolds)
-        warn_out_of_range("Re", reynolds, 1600.0, 7800.0, _TW_SOURCE)
-        warn_out_of_range("Re_omega", rot_reynolds, 20.0, 800.0, _TW_SOURCE)
+        warn_out_of_range("Re", span(reynolds), 1600.0, 7800.0, _TW_SOURCE)
+        warn_out_of_range("Re_omega", span(rot_reynolds), 20.0, 800.0, _TW_SOURCE)
 
 
 def tscheng_watkinson_gas_wall_nusselt(reynolds, rot_reynolds, *, check=True):
@@ -203,7 +204,7 @@ def gorog_gas_wall_h(conductivity, hydraulic_diameter, reynolds, prandtl, length
     """
     if check:
         check_positive("length", length, "m")
-        warn_out_of_range("Re", reynolds, 1.0e4, 1.0e6, "Gorog et al. (1982) pipe-flow form")
+        warn_out_of_range("Re", span(reynolds), 1.0e4, 1.0e6, "Gorog et al. (1982) pipe-flow form")
     return (
         0.036
         * np.asarray(conductivity)

@@ -89,8 +89,13 @@ class HeatResidual:
             tg_nodes = np.concatenate([tg_in, x[..., 1]], axis=-1)
         return tb_nodes, tg_nodes
 
-    def coefficients(self, tg, tb, tw):
-        """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell-mean states."""
+    def coefficients(self, tg, tb, tw, check=False):
+        """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell-mean states.
+
+        With ``check`` the closures validate their inputs and warn
+        (:class:`~rotarykiln.errors.OutOfRangeWarning`) outside their validated ranges; the
+        solver does this once on the converged state, not inside the Newton loop.
+        """
         k, g, c = self.kiln, self.grid, self.kiln.closures
         gas = k.gas
         mu = gas.viscosity(tg)
@@ -101,14 +106,14 @@ class HeatResidual:
         if c.gas_wall == "tscheng1979" or c.gas_bed == "tscheng1979":
             re_w = rotational_reynolds(rho, k.omega, De, mu)
         if c.gas_wall == "tscheng1979":
-            h_gw = tscheng_watkinson_gas_wall_nusselt(re, re_w, check=False) * kg / De
+            h_gw = tscheng_watkinson_gas_wall_nusselt(re, re_w, check=check) * kg / De
         else:
             pr = gas.prandtl(tg)
-            h_gw = gorog_gas_wall_h(kg, De, re, pr, k.length, check=False)
+            h_gw = gorog_gas_wall_h(kg, De, re, pr, k.length, check=check)
         if c.gas_bed == "tscheng1979":
-            h_gb = tscheng_watkinson_gas_bed_nusselt(re, re_w, g.fill, check=False) * kg / De
+            h_gb = tscheng_watkinson_gas_bed_nusselt(re, re_w, g.fill, check=check) * kg / De
         else:
-            h_gb = gorog_gas_bed_h(self.gas_mass_flux, check=False) * np.ones_like(tg)
+            h_gb = gorog_gas_bed_h(self.gas_mass_flux, check=check) * np.ones_like(tg)
         t_film = 0.5 * (tw + tb)
         kb = self.k_bed(t_film)
         rho_c = k.solid.bulk_density * k.solid.cp(tb)
@@ -120,12 +125,12 @@ class HeatResidual:
                 rho_c,
                 k.omega,
                 g.full_angle,
-                check=False,
+                check=check,
             )
         elif c.covered_wall == "tscheng1979":
-            h_cw = tscheng_covered_wall_h(kb, rho_c, k.omega, k.radius, g.full_angle, check=False)
+            h_cw = tscheng_covered_wall_h(kb, rho_c, k.omega, k.radius, g.full_angle, check=check)
         else:
-            h_cw = wachters_kramers_covered_wall_h(kb, rho_c, k.omega, g.full_angle, check=False)
+            h_cw = wachters_kramers_covered_wall_h(kb, rho_c, k.omega, g.full_angle, check=check)
         if not c.radiation:
             eps_g = 0.0
         elif not isinstance(c.gas_emissivity, str):
@@ -134,11 +139,11 @@ class HeatResidual:
             eps_g = 0.0
         elif c.gas_emissivity == "johansson2011":
             eps_g = johansson_wsgg_emissivity(
-                tg, self.p_h2o, self.p_co2, g.beam_length, check=False
+                tg, self.p_h2o, self.p_co2, g.beam_length, check=check
             )
         else:
             eps_g = smith_wsgg_emissivity(
-                tg, (self.p_h2o + self.p_co2) * g.beam_length, "pw/pc=2", check=False
+                tg, (self.p_h2o + self.p_co2) * g.beam_length, "pw/pc=2", check=check
             )
         eps_g = np.clip(eps_g, 0.0, 0.95)
         return {"h_gw": h_gw, "h_gb": h_gb, "h_cw": h_cw, "eps_gas": eps_g, "Re": re}

@@ -159,6 +159,14 @@ def solve_heat(
             stacklevel=2,
         )
     fluxes = {k: np.array(v, dtype=float) * np.ones(grid.n) for k, v in fl.items()}
+    for key, arr in fluxes.items():
+        if not np.all(np.isfinite(arr)):
+            j = int(np.argmax(~np.isfinite(arr)))
+            raise ConvergenceError(
+                f"non-finite {key} in cell {j} (z = {grid.z[j]:.4g} m)", iterations=total_iter
+            )
+    # validity ranges of the closures, checked once on the converged state
+    res.coefficients(fluxes["t_gas_mean"], fluxes["t_bed_mean"], x[:, 2], check=True)
     return KilnSolution(
         name=kiln.name,
         z_nodes=grid.z_nodes,
