@@ -77,3 +77,18 @@ def test_bad_heat_values_at_model_level():
     del data["operation"]["feed"]
     with pytest.raises(InputError, match="operation.feed"):
         heat_kiln_from_case(parse_case(data))
+
+
+def test_cli_run_with_heat_runner(tmp_path, monkeypatch, capsys):
+    # how the lead wires the section: RUNNERS["heat"] = "rotarykiln.kiln.run:heat_runner"
+    from rotarykiln import cli
+    from rotarykiln.commands import run as run_cmd
+
+    monkeypatch.setitem(run_cmd.RUNNERS, "heat", "rotarykiln.kiln.run:heat_runner")
+    case_path = builtin_case_path("heat/tscheng_A16")
+    code = cli.main(["run", str(case_path), "--out", str(tmp_path), "--json"])
+    assert code == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert abs(summary["heat_energy_balance_closure"]) < 1e-6
+    assert (tmp_path / "heat_profiles.csv").is_file()
+    assert (tmp_path / "heat_profiles.png").is_file()
