@@ -186,3 +186,23 @@ def test_source_hook_with_extra_unknown():
     assert abs(sol.balance_closure) < CLOSURE_TOL
     plain = solve_heat(kiln)
     assert sol.bed_outlet_temperature < plain.bed_outlet_temperature
+
+
+def test_continuation_used_when_newton_fails(monkeypatch, flame_kiln):
+    import rotarykiln.kiln.solve as solve_mod
+
+    real = solve_mod.newton_banded
+    calls = []
+
+    def flaky(F, x0, scale, **kw):
+        calls.append(F.homotopy)
+        if len(calls) == 1:
+            raise ConvergenceError("forced failure", iterations=0)
+        return real(F, x0, scale, **kw)
+
+    monkeypatch.setattr(solve_mod, "newton_banded", flaky)
+    sol = solve_mod.solve_heat(flame_kiln)
+    assert calls == [1.0, 0.0, 0.25, 0.5, 0.75, 1.0]
+    assert abs(sol.balance_closure) < CLOSURE_TOL
+    ref = solve_heat(flame_kiln)
+    assert np.max(np.abs(sol.t_bed_nodes - ref.t_bed_nodes)) < 1e-6

@@ -108,12 +108,12 @@ def solve_heat(
     def where(j, v):
         if v < 3:
             eq = _EQ[v]
-        elif v < 3 + nl:
-            eq = f"lining interface {v - 2}" if v - 2 < nl else "shell"
+        elif v < 2 + nl:
+            eq = f"lining interface {v - 2}"
+        elif v == 2 + nl:
+            eq = "shell"
         else:
             eq = f"source unknown {v - 3 - nl}"
-        if v == 2 + nl:
-            eq = "shell"
         return f"cell {j} (z = {grid.z[j]:.4g} m), {eq}"
 
     x0 = _initial_guess(kiln, res) if initial is None else np.array(initial, dtype=float)
