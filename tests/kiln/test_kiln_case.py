@@ -92,3 +92,14 @@ def test_cli_run_with_heat_runner(tmp_path, monkeypatch, capsys):
     assert abs(summary["heat_energy_balance_closure"]) < 1e-6
     assert (tmp_path / "heat_profiles.csv").is_file()
     assert (tmp_path / "heat_profiles.png").is_file()
+
+
+def test_heat_kiln_is_picklable():
+    # studies may ship kilns to worker processes (dask)
+    import pickle
+
+    kiln, _ = heat_kiln_from_case(parse_case(_data("heat/ubc_pilot_flame")))
+    clone = pickle.loads(pickle.dumps(kiln))
+    assert clone.heat_release == kiln.heat_release
+    z = np.linspace(0, kiln.length, 7)
+    assert np.array_equal(clone.heat_release_profile(z), kiln.heat_release_profile(z))

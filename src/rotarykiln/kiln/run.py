@@ -7,6 +7,7 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -19,7 +20,26 @@ from rotarykiln.materials.gas import burn_fuel, gas_table
 from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.materials.solids import load_solid
 
-__all__ = ["heat_kiln_from_case", "run_heat_case", "heat_runner", "flame_profile"]
+__all__ = ["FlameProfile", "heat_kiln_from_case", "run_heat_case", "heat_runner", "flame_profile"]
+
+
+@dataclass(frozen=True)
+class FlameProfile:
+    """Parabolic heat-release weight :math:`s(\\ell - s)` over the flame (picklable).
+
+    ``start`` and ``flame_length`` (m) are measured from the gas inlet (the burner end).
+    """
+
+    length: float
+    start: float
+    flame_length: float
+    counter_current: bool
+
+    def __call__(self, z):
+        z = np.asarray(z, dtype=float)
+        dist = (self.length - z) if self.counter_current else z
+        s = dist - self.start
+        return np.where((s > 0) & (s < self.flame_length), s * (self.flame_length - s), 0.0)
 
 
 def flame_profile(length: float, start: float, flame_length: float, counter_current: bool):
@@ -33,14 +53,7 @@ def flame_profile(length: float, start: float, flame_length: float, counter_curr
     >>> [round(float(v), 3) for v in w(np.array([4.5, 3.0]))]
     [0.25, 0.0]
     """
-
-    def profile(z):
-        z = np.asarray(z, dtype=float)
-        dist = (length - z) if counter_current else z
-        s = dist - start
-        return np.where((s > 0) & (s < flame_length), s * (flame_length - s), 0.0)
-
-    return profile
+    return FlameProfile(length, start, flame_length, counter_current)
 
 
 def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
