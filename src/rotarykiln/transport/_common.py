@@ -78,16 +78,38 @@ class MarchResult:
     """State y and axial distance x (from the start of the march) on a fine grid.
 
     ``reached`` is True when x reached the requested length; otherwise the march ended at the
-    asymptote ``y_target`` (or at the cap).
+    asymptote ``y_target`` (or at the cap). :meth:`y_at` interpolates y(x) to fourth order
+    (cubic Hermite in the march variable, whose derivative ``du/dx = 1/f`` is known).
     """
 
-    __slots__ = ("x", "y", "reached", "dxdy")
+    __slots__ = ("x", "y", "reached", "_xf", "_uf", "_ff", "_y_of_u")
 
-    def __init__(self, x, y, reached, dxdy):
+    def __init__(self, x, y, reached, xf, uf, ff, y_of_u):
         self.x = x
         self.y = y
         self.reached = reached
-        self.dxdy = dxdy
+        self._xf, self._uf, self._ff, self._y_of_u = xf, uf, ff, y_of_u
+
+    def y_at(self, xq):
+        """y at the distances ``xq`` (within [0, x[-1]])."""
+        xf, uf, ff = self._xf, self._uf, self._ff
+        k = np.clip(np.searchsorted(xf, xq, side="right") - 1, 0, xf.size - 2)
+        h = xf[k + 1] - xf[k]
+        t = (xq - xf[k]) / h
+        t2, t3 = t * t, t * t * t
+        secant = uf[k + 1] - uf[k]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            m0 = h / ff[k]
+            m1 = h / ff[k + 1]
+        m0 = np.where(np.isfinite(m0), m0, secant)  # dx/du = 0 (e.g. h = 0): no slope info
+        m1 = np.where(np.isfinite(m1), m1, secant)
+        u = (
+            (2 * t3 - 3 * t2 + 1) * uf[k]
+            + (t3 - 2 * t2 + t) * m0
+            + (-2 * t3 + 3 * t2) * uf[k + 1]
+            + (t3 - t2) * m1
+        )
+        return self._y_of_u(u)
 
 
 def _cumtrapz(f, t):
@@ -141,6 +163,9 @@ def march(
         u0 = -np.log(abs(y_target - y0))
         u_end = -np.log(eps * max(abs(y_target), 1e-300))
 
+        def y_of_u(u):
+            return y_target - d * np.exp(-u)
+
         def grid(u_hi, n):
             u = np.linspace(u0, u_hi, n)
             gap = np.exp(-u)
@@ -151,6 +176,9 @@ def march(
         if y_cap is None:
             raise ValueError("march needs y_target or y_cap")
         u0, u_end = y0, y_cap
+
+        def y_of_u(u):
+            return u
 
         def grid(u_hi, n):
             y = np.linspace(u0, u_hi, n)
@@ -167,7 +195,7 @@ def march(
     if x[-1] < length:
         u, y, f = grid(u_end, n_fine)
         x = _cumsimpson(f, u)
-        return MarchResult(x, y, False, f)
+        return MarchResult(x, y, False, x, u, f, y_of_u)
     k = int(np.searchsorted(x, length))
     u_hi = u[min(k + 1, u.size - 1)]
     u, y, f = grid(u_hi, n_fine)
@@ -180,4 +208,4 @@ def march(
     y_end = y[k - 1] + (y[k] - y[k - 1]) * (length - x[k - 1]) / (x[k] - x[k - 1])
     xs = np.append(x[:k], length)
     ys = np.append(y[:k], y_end)
-    return MarchResult(xs, ys, True, None)
+    return MarchResult(xs, ys, True, x, u, f, y_of_u)

@@ -123,7 +123,7 @@ def kramers_uniform_depth(q, radius, speed, slope, repose):
     >>> h = kramers_uniform_depth(62 / 3600 / 1500, 0.2, 3 * np.pi / 30, np.radians(1),
     ...                           np.radians(35))
     >>> round(float(h), 4)
-    0.0642
+    0.0413
 
     References
     ----------
@@ -171,7 +171,7 @@ def kramers_uniform_residence_time(length, q, radius, speed, slope, repose):
     >>> t = kramers_uniform_residence_time(2.0, 62 / 3600 / 1500, 0.2, 3 * np.pi / 30,
     ...                                    np.radians(1), np.radians(35))
     >>> round(float(t / 60), 1)
-    40.6
+    19.9
     """
     h = kramers_uniform_depth(q, radius, speed, slope, repose)
     radius = np.asarray(radius, dtype=float)
@@ -248,7 +248,7 @@ def kramers_profile(
     >>> p = kramers_profile(62 / 3600, density=1500, length=2.0, radius=0.2,
     ...     speed=3 * np.pi / 30, slope=np.radians(1), repose=np.radians(35))
     >>> round(100 * float(p.fill[0]), 2), round(p.mean_residence_time / 60, 1)
-    (11.46, 36.7)
+    (4.75, 13.0)
     """
     check_positive("length", length, "m")
     check_positive("speed", speed, "rad/s")
@@ -351,7 +351,9 @@ def _profile_constant(x, h0, q, radius, omega, slope, repose):
         res = march(dxdh, h0, length, y_cap=2.0 * radius * (1.0 - 1e-9))
         if not res.reached:
             raise _no_steady(q, float(res.x[-1]))
-    h = np.interp(x, res.x, res.y, right=h_inf if h_inf is not None else np.nan)
+    inside = x <= res.x[-1]
+    h = np.full(x.size, np.nan if h_inf is None else h_inf)
+    h[inside] = res.y_at(x[inside])
     return h, None if h_inf is None else float(h_inf)
 
 

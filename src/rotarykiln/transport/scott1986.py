@@ -52,14 +52,15 @@ def scott1986_model_fill(row, *, sections: bool = False, beyond_half: str = "sat
 
     With ``sections=True`` (Table 5.1) return ``(inlet %, discharge %, overall %)``.
     ``beyond_half="saturate"`` (default here) reproduces the thesis program, which holds the
-    local fill at 50 %. Warnings about the validated range (speeds above half critical in A4.11) are silenced:
-    the thesis itself runs those points.
+    local fill at 50 %. Warnings about the validated range (speeds above half critical in
+    A4.11) are silenced: the thesis itself runs those points.
     """
     rpm = np.pi / 30.0
-    omega = float(row["speed_rpm"]) * rpm
     radius = float(row["radius_m"])
-    if "pct_critical" in row and "weir_radius_m" in row:  # Table 5.1: speed given as % critical
+    if "weir_radius_m" in row:  # Table 5.1 gives the speed as % of critical only
         omega = float(row["pct_critical"]) / 100.0 * np.sqrt(9.81 / radius)
+    else:
+        omega = float(row["speed_rpm"]) * rpm
     variant = row.get("model_variant", "scott")
     if not isinstance(variant, str) or not variant:
         variant = "scott"
