@@ -80,3 +80,32 @@ def test_case_transport_section(tmp_path):
     res = run_case_section(case, tmp_path)
     assert 0 < res["transport_mean_fill"] < 0.5
     assert (tmp_path / "profile.csv").exists()
+
+
+def test_run_case_with_transport_section(tmp_path, capsys):
+    case = tmp_path / "kiln.yaml"
+    case.write_text(
+        "name: pilot\n"
+        "kiln: {length: 2 m, diameter: 0.4 m, slope: 1 deg}\n"
+        "operation: {speed: 3 rpm, feed: 62 kg/h}\n"
+        "material: {bulk_density: 1500 kg/m3, repose_angle: 35 deg}\n"
+        "transport: {model: kramers, dam_height: 5 cm}\n"
+    )
+    out = tmp_path / "res"
+    assert main(["run", str(case), "--out", str(out), "--no-plots", "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["transport_model"] == "kramers"
+    assert (out / "profile.csv").exists()
+
+
+def test_case_transport_section_rejects_unknown_model():
+    from rotarykiln.errors import InputError
+
+    with pytest.raises(InputError, match="transport"):
+        parse_case(
+            {
+                "kiln": {"length": "2 m", "diameter": "0.4 m"},
+                "operation": {"speed": "3 rpm"},
+                "transport": {"model": "bogus"},
+            }
+        )

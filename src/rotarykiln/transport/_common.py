@@ -6,6 +6,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from rotarykiln import regimes
 from rotarykiln.errors import InputError, check_positive, warn_out_of_range
 
 G = 9.81  # m/s2, the value used by Scott (1986)
@@ -22,14 +23,16 @@ __all__ = [
 
 
 def critical_speed(radius):
-    r"""Critical (centrifuging) speed :math:`\omega_c = \sqrt{g/R}`, rad/s, for radius in m.
+    r"""Critical speed :math:`\omega_c = \sqrt{g/R}` (rad/s) with Scott's g = 9.81 m/s2.
+
+    Thin wrapper of :func:`rotarykiln.regimes.critical_speed` (which defaults to standard g).
 
     Examples
     --------
     >>> round(float(critical_speed(0.0465)), 3)
     14.525
     """
-    return np.sqrt(G / np.asarray(radius, dtype=float))
+    return regimes.critical_speed(radius, g=G)
 
 
 def as_axial_function(name: str, value) -> tuple[Callable[[np.ndarray], np.ndarray], bool]:
