@@ -544,8 +544,9 @@ def scott_profile(
     Raises
     ------
     InputError
-        Bad geometry (dam at or above the axis... opening <= 0), angle of repose below the
-        slope, friction that stops the cascade, or a feed the drum cannot carry.
+        A dam opening outside (0, R] (a dam at or above the drum radius), an angle of repose
+        below the slope, friction that stops the cascade, or a feed the drum cannot carry
+        (no steady solution).
 
     Notes
     -----
