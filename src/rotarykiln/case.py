@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 import re
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 import yaml
 from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
@@ -66,6 +66,8 @@ __all__ = [
     "Temperature",
     "ThermalConductivity",
     "Time",
+    "Transport",
+    "TransportWeir",
     "Velocity",
     "VolumetricFlow",
     "load_case",
@@ -260,6 +262,37 @@ class Heat(Section):
     measurements: HeatMeasurements | None = None
 
 
+class TransportWeir(Section):
+    """An internal weir: distance from the discharge end and height above the wall."""
+
+    position: Length
+    height: Length
+
+
+class Transport(Section):
+    """Axial solids transport (rotarykiln.transport): model choice, friction law, dams, weirs.
+
+    ``model``: ``kramers`` (Kramers-Croockewit/Saeman ODE) or ``scott`` (Scott 1986);
+    ``friction`` (Scott): ``zero``, ``dynamic``, ``static`` or a number; ``dam_height``:
+    discharge dam above the wall (open end if absent); ``weirs`` (Scott only).
+    """
+
+    model: Literal["kramers", "scott"] = "kramers"
+    friction: (
+        Literal["zero", "dynamic", "static"]
+        | Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))]
+    ) = "static"
+    dam_height: Length | None = None
+    weirs: list[TransportWeir] = []
+    n_points: int = 201
+
+
+def _nonnegative_number(v: Any) -> float:
+    if isinstance(v, bool) or not isinstance(v, int | float) or not v >= 0:
+        raise PydanticCustomError("number", "{value} is not a number >= 0", {"value": v})
+    return float(v)
+
+
 class Case(Section):
     """A complete case file."""
 
@@ -269,6 +302,7 @@ class Case(Section):
     operation: Operation
     material: Material = Material()
     bed: Bed | None = None
+    transport: Transport | None = None
     heat: Heat | None = None
 
 

@@ -5,8 +5,6 @@ the steady counter-current heat model from the measured inputs, with the measure
 temperatures overlaid on the computed profiles.
 """
 
-DEMO_CASE = "heat/tscheng_A16"
-
 from __future__ import annotations
 
 import argparse
@@ -17,6 +15,8 @@ from rotarykiln.commands._args import out_dir
 from rotarykiln.commands.run import run_case
 from rotarykiln.outputs import write_text_atomic
 from rotarykiln.report import format_table
+
+DEMO_CASE = "heat/tscheng_A16"
 
 
 def register(sub) -> None:
