@@ -101,7 +101,7 @@ for label, prof in [("hot", (zT, TT)), ("cold", (zT, T_cold))]:
 
 # 4. chapter-5 design with the isothermal stand-in model
 case = builtin_case("charcoal_activation")
-case["chemistry"]["reaction_zone_temperature"] = "1150 K"
+case["standin"] = {"reaction_zone_temperature": "1150 K"}
 sweep = run_sweep(ortiz_isothermal_burn_off, case, ahmad_chapter5_design(), max_workers=2)
 print(
     "chapter-5 stand-in sweep:",

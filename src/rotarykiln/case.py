@@ -50,6 +50,7 @@ __all__ = [
     "HeatMeasurements",
     "LiningLayer",
     "Case",
+    "Chemistry",
     "Density",
     "Fraction",
     "HeatTransferCoefficient",
@@ -293,6 +294,85 @@ def _nonnegative_number(v: Any) -> float:
     return float(v)
 
 
+def _composition(phase: str):
+    def check(v: Any) -> dict[str, float]:
+        from rotarykiln.chemistry.species import check_mass_fractions
+
+        try:
+            return check_mass_fractions("composition", v, phase=phase)
+        except InputError as exc:
+            raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
+
+    return Annotated[dict[str, float], BeforeValidator(check)]
+
+
+def _reaction_names(v: Any) -> list[str]:
+    from rotarykiln.chemistry.reaction import builtin_reactions
+
+    if not isinstance(v, list) or not v or not all(isinstance(x, str) for x in v):
+        raise PydanticCustomError("number", "{value} is not a list of reaction names", {"value": v})
+    known = builtin_reactions()
+    for name in v:
+        if name not in known:
+            raise PydanticCustomError(
+                "number",
+                "{name} is not a built-in reaction ({known})",
+                {"name": name, "known": ", ".join(sorted(known))},
+            )
+    return v
+
+
+class ChemistryFeed(Section):
+    """Solids entering the kiln: temperature and composition (bed-species mass fractions)."""
+
+    temperature: Temperature
+    composition: _composition("bed")
+
+
+class ChemistryGas(Section):
+    """Gas entering at the gas inlet: temperature, mass flow, composition (mass fractions)."""
+
+    inlet_temperature: Temperature | None = None
+    inlet_flow: MassFlow | None = None
+    composition: _composition("gas") | None = None
+    steam_flow: MassFlow | None = None
+    emissivity_a: Fraction | None = None
+    emissivity_b_per_K: float | None = None
+    emissivity_minimum: Fraction | None = None
+    pressure: Pressure = 101325.0
+
+
+class ChemistrySolid(Section):
+    """Bed properties used by the reacting model of seed 004."""
+
+    specific_heat: SpecificHeat | None = None
+    thermal_conductivity: ThermalConductivity | None = None
+    emissivity: Fraction | None = None
+    critical_moisture: Fraction = 0.1
+
+
+class WallLoss(Section):
+    """Shell loss per metre q = U pi D (T_wall - T_ambient), U referred to the inner wall."""
+
+    U: HeatTransferCoefficient
+    ambient_temperature: Temperature = 298.15
+
+
+class Chemistry(Section):
+    """Reacting kiln (rotarykiln.chemistry): reactions, feed and gas compositions, seed-004 inputs."""
+
+    reactions: Annotated[list[str], BeforeValidator(_reaction_names)]
+    feed: ChemistryFeed
+    gas: ChemistryGas = ChemistryGas()
+    solid: ChemistrySolid = ChemistrySolid()
+    residence_time: Time | None = None
+    wall_loss: WallLoss | None = None
+    wall_temperature_guess: Temperature | None = None
+    gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
+    kirchhoff: bool = False
+    expected: dict[str, Any] = {}
+
+
 class Case(Section):
     """A complete case file."""
 
@@ -304,6 +384,7 @@ class Case(Section):
     bed: Bed | None = None
     transport: Transport | None = None
     heat: Heat | None = None
+    chemistry: Chemistry | None = None
 
 
 def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:

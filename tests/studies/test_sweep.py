@@ -139,11 +139,11 @@ def test_chapter5_design_on_builtin_case_with_toy_model():
     # The design addresses fields that exist in the built-in charcoal case, and a stand-in model
     # (isothermal reaction zone) gives seed 004's directions for residence time and steam flow.
     case = builtin_case("charcoal_activation")
-    case["chemistry"]["reaction_zone_temperature"] = "1150 K"
+    case["standin"] = {"reaction_zone_temperature": "1150 K"}
     res = run_sweep(ortiz_isothermal_burn_off, case, ahmad_chapter5_design(), executor="serial")
     assert res.n_failed == 0
     df = res.frame
-    for path in ("operation.residence_time", "gas.steam_mass_flow"):
+    for path in ("chemistry.residence_time", "chemistry.gas.steam_flow"):
         sub = df[df["group"] == path].sort_values(path + " [SI]")
         assert np.all(np.diff(sub["burn_off"]) > 0) and CHAPTER5_DIRECTIONS[path] == 1
         assert np.allclose(sub["burn_off"] + sub["production"], 100.0)

@@ -39,21 +39,22 @@ def ortiz_isothermal_burn_off(case: dict) -> dict:
               \mathrm{production} = 100 - \mathrm{BO}
 
     with :math:`t_r f_r` the time spent in the reaction zone (a fraction ``f_r`` of the residence
-    time, seed 004: from 2.5 m to 3.7 m, f_r = 1.2/3.7). Fields: ``operation.residence_time``,
-    ``gas.steam_mass_flow``, ``chemistry.reaction_zone_temperature`` (temperature),
-    ``chemistry.reaction_zone_fraction`` (fraction). A stand-in for the kiln model; it shows the
-    directions of seed 004 Figs. 5.1 and 5.4 only (no heat balance: no effect of gas or solid
-    flow).
+    time, seed 004: from 2.5 m to 3.7 m, f_r = 1.2/3.7). Fields (the built-in case's):
+    ``chemistry.residence_time``, ``chemistry.gas.steam_flow``; stand-in settings (optional,
+    top-level ``standin`` mapping): ``reaction_zone_temperature`` (default 1150 K) and
+    ``reaction_zone_fraction``. A stand-in for the kiln model; it shows the directions of seed
+    004 Figs. 5.1 and 5.4 only (no heat balance: no effect of gas or solid flow).
     """
-    t = to_si("operation.residence_time", case["operation"]["residence_time"], "time")
-    qa = to_si("gas.steam_mass_flow", case["gas"]["steam_mass_flow"], "mass flow")
-    ch = case.get("chemistry", {})
+    ch = case["chemistry"]
+    t = to_si("chemistry.residence_time", ch["residence_time"], "time")
+    qa = to_si("chemistry.gas.steam_flow", ch["gas"]["steam_flow"], "mass flow")
+    sd = case.get("standin", {})
     T = to_si(
-        "chemistry.reaction_zone_temperature",
-        ch.get("reaction_zone_temperature", "1150 K"),
+        "standin.reaction_zone_temperature",
+        sd.get("reaction_zone_temperature", "1150 K"),
         "temperature",
     )
-    f = float(ch.get("reaction_zone_fraction", 1.2 / 3.7))
+    f = float(sd.get("reaction_zone_fraction", 1.2 / 3.7))
     k = 6.005 * math.exp(-8033.0 / T) * qa if T >= 1073.0 else 0.0
     bo = 100.0 * (1.0 - math.exp(-k * t * f))
     return {"burn_off": bo, "production": 100.0 - bo}
