@@ -181,6 +181,6 @@ class SweepResult:
 
         fig = self.plot(**kwargs)
         try:
-            return save_figure_atomic(fig, path, dpi=100)
+            return save_figure_atomic(path, fig, dpi=100)
         finally:
             plt.close(fig)
