@@ -147,3 +147,13 @@ def test_chapter5_design_on_builtin_case_with_toy_model():
         sub = df[df["group"] == path].sort_values(path + " [SI]")
         assert np.all(np.diff(sub["burn_off"]) > 0) and CHAPTER5_DIRECTIONS[path] == 1
         assert np.allclose(sub["burn_off"] + sub["production"], 100.0)
+
+
+def test_oat_rows_show_base_values_for_unswept_parameters():
+    design = one_at_a_time(
+        {"operation.residence_time": ["50 s"], "reaction.rate_constant": ["0.02 1/s"]}
+    )
+    df = run_sweep(first_order_conversion, BASE, design, executor="serial").frame
+    assert df.loc[1, "reaction.rate_constant"] == "0.01 1/s"  # base value
+    assert df.loc[2, "operation.residence_time"] == "100 s"
+    assert df.loc[2, "conversion"] == pytest.approx(1 - np.exp(-2.0))

@@ -17,6 +17,7 @@ from rotarykiln.studies.io import (
     write_csv_atomic,
     write_parquet_atomic,
 )
+from rotarykiln.studies.paths import get_path
 
 __all__ = ["SweepResult", "SI_SUFFIX"]
 
@@ -31,7 +32,8 @@ class SweepResult:
     Attributes
     ----------
     frame : pandas.DataFrame
-        Columns ``case_id``, ``group``, each swept path (value as given) and ``<path> [SI]``,
+        Columns ``case_id``, ``group``, each swept path (value as given, the base case's value
+        where the case does not set it) and ``<path> [SI]``,
         the outputs, ``error`` ("" when the case ran) and ``elapsed_s``.
     parameters : tuple of str
         Swept paths.
@@ -50,7 +52,10 @@ class SweepResult:
     meta: dict = field(default_factory=dict)
 
     @classmethod
-    def from_rows(cls, rows: Sequence[dict], cases: Sequence[CaseSpec], wall_time=0.0, executor=""):
+    def from_rows(
+        cls, rows: Sequence[dict], cases: Sequence[CaseSpec], wall_time=0.0, executor="", base=None
+    ):
+        """Assemble the table; parameters a case does not set show the base case's value."""
         by_id = {c.case_id: c for c in cases}
         params: list[str] = []
         for c in cases:
@@ -69,14 +74,20 @@ class SweepResult:
             raise InputError(
                 "sweep.outputs", clash[0], "an output name distinct from parameters and columns"
             )
+        base_values = {}
+        for p in params:
+            try:
+                base_values[p] = get_path(base, p) if base is not None else None
+            except InputError:  # a path created by the sweep
+                base_values[p] = None
         records = []
         for r in sorted(rows, key=lambda r: r["case_id"]):
             spec = by_id[r["case_id"]]
             rec = {"case_id": r["case_id"], "group": r["group"]}
             for p in params:
-                v = spec.values.get(p)
+                v = spec.values.get(p, base_values[p])
                 rec[p] = v
-                rec[p + SI_SUFFIX] = si_value(v) if p in spec.values else np.nan
+                rec[p + SI_SUFFIX] = si_value(v) if v is not None else np.nan
             for o in outputs:
                 rec[o] = r["outputs"].get(o)
             rec["error"] = r["error"]

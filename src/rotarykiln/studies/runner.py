@@ -215,4 +215,4 @@ def run_sweep(
         ]
         rows = [r for chunk in _dask_compute(tasks, dask_scheduler) for r in chunk]
     wall = time.perf_counter() - t0
-    return SweepResult.from_rows(rows, cases, wall_time=wall, executor=executor)
+    return SweepResult.from_rows(rows, cases, wall_time=wall, executor=executor, base=base_case)
