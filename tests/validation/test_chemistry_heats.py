@@ -87,3 +87,12 @@ def test_pyrolysis_heat_per_kg_kerogen_whatever_the_path():
     for direct in ("pyrolysis_wen_yen_4", "pyrolysis_wen_yen_5"):
         assert rx[direct].heat == pytest.approx(via_bitumen)
     assert via_bitumen == pytest.approx(799.25e3)
+
+
+def test_table_9_1_feed_composition_is_a_valid_bed_composition():
+    # 25 % water, 20 % kerogen, 6 % calcite as printed; the rest lumped inert (49 %).
+    from rotarykiln.chemistry.pyrolysis import oil_shale_feed_composition
+    from rotarykiln.chemistry.species import check_mass_fractions
+
+    w = check_mass_fractions("shale", oil_shale_feed_composition(), phase="bed")
+    assert w == {"H2O(l)": 0.25, "kerogen": 0.20, "CaCO3": 0.06, "inert": 0.49}

@@ -28,6 +28,7 @@ __all__ = [
     "berkovich_conversion",
     "berkovich_reaction_enthalpy",
     "kerogen_reaction_heat",
+    "oil_shale_feed_composition",
 ]
 
 #: R in kcal/(mol K), as used with the kcal/mol activation energies of the scheme.
@@ -264,3 +265,26 @@ def kerogen_reaction_heat(table: ShaleTable | None = None) -> float:
         raise InputError("oil_shale_table", "no kerogen row", "a table with a kerogen row")
     i = t.material.index("kerogen")
     return float(t.enthalpy[i] / t.mass_fraction[i])
+
+
+def oil_shale_feed_composition(table: ShaleTable | None = None) -> dict[str, float]:
+    """Bed-species mass fractions of the Table 9.1 shale (seed 000).
+
+    Water -> ``H2O(l)``, kerogen -> ``kerogen``, calcite -> ``CaCO3``; the clays, quartz,
+    pyrite, gypsum, siderite and dolomite are lumped as ``inert`` (their small reaction heats are
+    not modelled as reactions; :func:`berkovich_reaction_enthalpy` has them all).
+
+    Examples
+    --------
+    >>> oil_shale_feed_composition()
+    {'H2O(l)': 0.25, 'kerogen': 0.2, 'CaCO3': 0.06, 'inert': 0.49}
+    """
+    t = table or oil_shale_table()
+    w = dict(zip(t.material, t.mass_fraction, strict=True))
+    out = {
+        "H2O(l)": float(w.get("water", 0.0)),
+        "kerogen": float(w.get("kerogen", 0.0)),
+        "CaCO3": float(w.get("calcite", 0.0)),
+    }
+    out["inert"] = round(1.0 - sum(out.values()), 12)
+    return {k: round(v, 12) for k, v in out.items()}
