@@ -14,12 +14,10 @@ from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print
 from rotarykiln.errors import InputError
 from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 from rotarykiln.report import format_table
-from rotarykiln.transport.kramers import kramers_profile
-from rotarykiln.transport.scott import scott_profile
-from rotarykiln.transport.weirs import Weir, dam_radius_from_height
+from rotarykiln.transport.solve import solve_bed
 from rotarykiln.units import to_si
 
-__all__ = ["register", "run", "solve_bed", "run_case_section"]
+__all__ = ["register", "run", "run_case_section"]
 
 
 def register(sub) -> None:
@@ -63,56 +61,6 @@ def _friction(text):
         return float(text)
     except (TypeError, ValueError):
         return text
-
-
-def solve_bed(
-    *,
-    model,
-    diameter,
-    length,
-    speed,
-    slope,
-    feed,
-    density,
-    repose,
-    static_repose=None,
-    dam=None,
-    weirs=(),
-    friction="static",
-    n_points=201,
-):
-    """Run the chosen bed model on SI inputs; return a BedProfile."""
-    radius = diameter / 2.0
-    if dam is not None and dam > 0:
-        dam_radius_from_height(dam, radius, "dam")
-    if model == "kramers":
-        if weirs:
-            raise InputError("--weir", "given", "used with --model scott only")
-        return kramers_profile(
-            feed,
-            density=density,
-            length=length,
-            radius=radius,
-            speed=speed,
-            slope=slope,
-            repose=repose,
-            dam_height=dam,
-            n_points=max(n_points, 2),
-        )
-    return scott_profile(
-        feed,
-        density=density,
-        length=length,
-        radius=radius,
-        speed=speed,
-        slope=slope,
-        dynamic_angle=repose,
-        static_angle=static_repose if static_repose is not None else repose,
-        discharge_radius=None if not dam else radius - dam,
-        weirs=[Weir.from_height(p, h, radius) for p, h in weirs],
-        friction=friction,
-        n_points=n_points,
-    )
 
 
 def _write(profile, out) -> dict:

@@ -20,7 +20,14 @@ from rotarykiln.materials.gas import burn_fuel, gas_table
 from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.materials.solids import load_solid
 
-__all__ = ["FlameProfile", "heat_kiln_from_case", "run_heat_case", "heat_runner", "flame_profile"]
+__all__ = [
+    "FlameProfile",
+    "bed_fill_profile",
+    "heat_kiln_from_case",
+    "run_heat_case",
+    "heat_runner",
+    "flame_profile",
+]
 
 
 @dataclass(frozen=True)
@@ -56,6 +63,39 @@ def flame_profile(length: float, start: float, flame_length: float, counter_curr
     return FlameProfile(length, start, flame_length, counter_current)
 
 
+def bed_fill_profile(case) -> tuple[np.ndarray, np.ndarray]:
+    """The local fill along the kiln from the case's ``transport:`` bed model, as ``(z, fill)``.
+
+    This couples the axial transport model (Kramers or Scott, with dams and weirs) to the heat
+    model: the bed depth, and with it every exchange area, follows the computed profile.
+    """
+    from rotarykiln.transport.solve import solve_bed
+
+    t, m, op, k = case.transport, case.material, case.operation, case.kiln
+    for field, value in (
+        ("material.bulk_density", m.bulk_density),
+        ("material.repose_angle", m.repose_angle),
+    ):
+        if value is None:
+            raise InputError(field, None, "given when a transport: section sets the bed")
+    profile = solve_bed(
+        model=t.model,
+        diameter=k.diameter,
+        length=k.length,
+        speed=op.speed,
+        slope=k.slope,
+        feed=op.feed,
+        density=m.bulk_density,
+        repose=m.repose_angle,
+        static_repose=m.static_repose_angle,
+        dam=t.dam_height,
+        weirs=[(w.position, w.height) for w in t.weirs],
+        friction=t.friction,
+        n_points=max(t.n_points, 401),
+    )
+    return np.asarray(profile.z, dtype=float), np.asarray(profile.fill, dtype=float)
+
+
 def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
     """The :class:`HeatKiln` and cell count of a case with a ``heat`` section."""
     h = case.heat
@@ -72,10 +112,14 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
     solid = load_solid(h.solid, **overrides)
     if h.fill is not None:
         fill = np.asarray(h.fill, dtype=float) if isinstance(h.fill, list) else float(h.fill)
+    elif case.transport is not None:
+        fill = bed_fill_profile(case)
     elif case.bed is not None:
         fill = case.bed.fill
     else:
-        raise InputError("heat.fill", None, "given (or a bed: section with fill)")
+        raise InputError(
+            "heat.fill", None, "given (or a transport: section, or a bed: section with fill)"
+        )
     layers = tuple(
         Layer(
             load_lining_material(layer.material),
