@@ -33,7 +33,7 @@ from rotarykiln.chemistry.drying import (
     ahmad_critical_moisture_drying_rate,
     heat_limited_drying_rate,
 )
-from rotarykiln.chemistry.pyrolysis import _wen_yen_k
+from rotarykiln.chemistry.pyrolysis import _R_KCAL, WEN_YEN_PARAMETERS
 from rotarykiln.errors import InputError
 
 __all__ = ["RateLaw", "RateContext", "RATE_LAWS", "register_rate_law", "MOISTURE"]
@@ -293,7 +293,8 @@ def _ortiz(ctx, basis, p):
 @register_rate_law("wen_yen", {"step": 1.0}, "Wen & Yen (1977) kerogen scheme, one step")
 def _wen_yen(ctx, basis, p):
     step = int(p["step"])
-    k = _wen_yen_k(ctx.T_bed)[step - 1]
+    a, E = WEN_YEN_PARAMETERS[step - 1]
+    k = np.exp(a - E / (_R_KCAL * ctx.T_bed)) / 60.0  # 1/min -> 1/s
     if step in (1, 2):
         return k * ctx.holdup(basis)
     # steps 3-5: k x1 x2 with x2 = bitumen / initial kerogen; in hold-up: k m'_K x2
