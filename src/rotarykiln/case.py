@@ -306,19 +306,33 @@ def _composition(phase: str):
     return Annotated[dict[str, float], BeforeValidator(check)]
 
 
-def _reaction_names(v: Any) -> list[str]:
-    from rotarykiln.chemistry.reaction import builtin_reactions
+def _reaction_names(v: Any) -> list:
+    """Built-in reaction names or user reactions (mappings, validated as reaction YAML)."""
+    from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
 
-    if not isinstance(v, list) or not v or not all(isinstance(x, str) for x in v):
-        raise PydanticCustomError("number", "{value} is not a list of reaction names", {"value": v})
+    if not isinstance(v, list) or not v or not all(isinstance(x, str | dict) for x in v):
+        raise PydanticCustomError(
+            "number", "{value} is not a list of reaction names or reactions", {"value": v}
+        )
     known = builtin_reactions()
-    for name in v:
-        if name not in known:
-            raise PydanticCustomError(
-                "number",
-                "{name} is not a built-in reaction ({known})",
-                {"name": name, "known": ", ".join(sorted(known))},
-            )
+    seen = set()
+    for i, item in enumerate(v):
+        if isinstance(item, dict):
+            try:
+                name = reaction_from_dict(item, where=f"[{i}]").name
+            except InputError as exc:
+                raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
+        else:
+            name = item
+            if name not in known:
+                raise PydanticCustomError(
+                    "number",
+                    "{name} is not a built-in reaction ({known})",
+                    {"name": name, "known": ", ".join(sorted(known))},
+                )
+        if name in seen:
+            raise PydanticCustomError("number", "{name} is listed twice", {"name": name})
+        seen.add(name)
     return v
 
 
@@ -359,17 +373,25 @@ class WallLoss(Section):
 
 
 class Chemistry(Section):
-    """Reacting kiln (rotarykiln.chemistry): reactions, feed and gas compositions, seed-004 inputs."""
+    """Reacting kiln (rotarykiln.chemistry, rotarykiln.kiln.reacting): reactions (built-in names
+    or user reactions as mappings), feed and gas compositions, seed-004 inputs, closures (default
+    seed 004's), ``cells``, ``onset_width`` (K, ramp below sharp onset temperatures),
+    ``peclet`` (bed axial dispersion; default from the Sherritt et al. 2003 correlation)."""
 
-    reactions: Annotated[list[str], BeforeValidator(_reaction_names)]
+    reactions: Annotated[list, BeforeValidator(_reaction_names)]
     feed: ChemistryFeed
     gas: ChemistryGas = ChemistryGas()
     solid: ChemistrySolid = ChemistrySolid()
     residence_time: Time | None = None
     wall_loss: WallLoss | None = None
+    wall_emissivity: Fraction | None = None
     wall_temperature_guess: Temperature | None = None
     gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
     kirchhoff: bool = False
+    closures: HeatClosures | None = None
+    cells: int = 100
+    onset_width: Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))] = 0.0
+    peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
     expected: dict[str, Any] = {}
 
 

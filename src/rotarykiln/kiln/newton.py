@@ -31,10 +31,10 @@ class NewtonReport:
     jacobian_evaluations: int
 
 
-def _banded_jacobian(F, x, R0, rel_step=1e-7):
+def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
     n, nv = x.shape
     ncol = 3 * nv
-    h = rel_step * np.maximum(np.abs(x), 1.0)
+    h = rel_step * np.maximum(np.abs(x), step_floor)
     X = np.broadcast_to(x, (ncol, n, nv)).copy()
     cells = np.arange(n)
     for c in range(3):
@@ -72,6 +72,7 @@ def newton_banded(
     lower: float = 160.0,
     temperature_vars: int | None = None,
     where=None,
+    step_floor=1.0,
 ):
     """Solve ``F(x) = 0`` for ``x`` of shape ``(n, nv)``.
 
@@ -94,6 +95,9 @@ def newton_banded(
         The first ``temperature_vars`` variables are temperatures (step limited, floored).
     where : callable(j, v) -> str
         Describes unknown ``(j, v)`` for error messages.
+    step_floor : float or array (nv,)
+        Finite-difference steps are ``1e-7 max(|x|, step_floor)`` (per variable): a small
+        floor resolves unknowns that approach 0 (species flows near full conversion).
 
     Returns
     -------
@@ -117,7 +121,7 @@ def newton_banded(
             return x, NewtonReport(it - 1, norm, tuple(history), n_jac)
         if not np.isfinite(norm):
             break
-        ab, bw = _banded_jacobian(F, x, R)
+        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor)
         n_jac += 1
         try:
             dx = solve_banded((bw, bw), ab, -R.ravel(), check_finite=False).reshape(n, nv)

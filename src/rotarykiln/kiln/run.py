@@ -206,8 +206,15 @@ def run_heat_case(case) -> KilnSolution:
 
 
 def heat_runner(case, out: Path) -> dict:
-    """``rotarykiln run`` section runner: solve, write profiles/summary/figure, return summary."""
+    """``rotarykiln run`` section runner: solve, write profiles/summary/figure, return summary.
+
+    A case that also has a ``chemistry:`` section is solved by the reacting kiln
+    (:func:`rotarykiln.kiln.reacting.reacting_runner`) instead: this runner then does nothing.
+    """
     import matplotlib.pyplot as plt
+
+    if getattr(case, "chemistry", None) is not None:
+        return {}
 
     from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 

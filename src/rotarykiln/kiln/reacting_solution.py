@@ -1,0 +1,177 @@
+"""Result of a reacting kiln solve: temperatures, species flows, rates, balances."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from rotarykiln.chemistry.ratelaws import MOISTURE
+
+__all__ = ["ReactingSolution"]
+
+
+@dataclass(frozen=True)
+class ReactingSolution:
+    """Steady reacting kiln solution (SI units).
+
+    Face profiles (``n + 1`` values, z = 0 at the solids inlet): ``z_nodes`` (m),
+    ``t_bed_nodes``, ``t_gas_nodes`` (K), ``bed_flows`` and ``gas_flows`` (species -> kg/s).
+    Cell profiles: ``z`` (m), ``t_bed``, ``t_gas`` (cell means), ``t_wall`` (K),
+    ``reaction_rates`` (reaction -> kg basis/(s m)), ``fluxes`` (W/m per path, coefficients).
+    Balances: ``energy_closure`` = (enthalpy in - out - shell loss - reaction heat) / heat to the
+    solids (-), ``element_closure`` (element -> relative |in - out|), ``reaction_heat`` (W,
+    absorbed at 298.15 K basis), ``shell_loss`` (W), ``energy_in``/``energy_out`` (W, sensible
+    enthalpy flows relative to 298.15 K). Solver: ``iterations``, ``residual``.
+    """
+
+    name: str
+    z_nodes: np.ndarray
+    t_bed_nodes: np.ndarray
+    t_gas_nodes: np.ndarray
+    bed_flows: dict
+    gas_flows: dict
+    z: np.ndarray
+    t_bed: np.ndarray
+    t_gas: np.ndarray
+    t_wall: np.ndarray
+    reaction_rates: dict
+    fluxes: dict
+    energy_in: float
+    energy_out: float
+    shell_loss: float
+    reaction_heat: float
+    heat_to_solids: float
+    energy_closure: float
+    element_closure: dict
+    iterations: int
+    residual: float
+    residence_time: float
+    fill: float
+    feed: dict = field(repr=False, default_factory=dict)
+
+    # --- performance --------------------------------------------------------------------------
+    def _dry(self, i: int) -> float:
+        return float(sum(v[i] for s, v in self.bed_flows.items() if s != MOISTURE))
+
+    @property
+    def burn_off(self) -> float:
+        """Dry-basis loss of solid mass, % (seed 004's burn-off, moisture excluded)."""
+        d0, d1 = self._dry(0), self._dry(-1)
+        return 100.0 * (d0 - d1) / d0 if d0 > 0 else 0.0
+
+    @property
+    def production(self) -> float:
+        """Dry solids out per dry solids in, % (100 - burn-off)."""
+        return 100.0 - self.burn_off
+
+    def conversion(self, species: str) -> np.ndarray:
+        """1 - Q(z)/Q_in of a bed species along the faces, -."""
+        q = self.bed_flows[species]
+        return 1.0 - q / q[0] if q[0] > 0 else np.zeros_like(q)
+
+    def onset(self, reaction: str, fraction: float = 0.01) -> tuple[float, float]:
+        """First cell (z, T_bed) where ``reaction`` exceeds ``fraction`` of its peak rate."""
+        r = self.reaction_rates[reaction]
+        if r.max() <= 0:
+            return float("nan"), float("nan")
+        j = int(np.argmax(r >= fraction * r.max()))
+        return float(self.z[j]), float(self.t_bed[j])
+
+    def end(self, reaction: str, fraction: float = 0.01) -> float:
+        """Last cell centre z where ``reaction`` exceeds ``fraction`` of its peak rate, m."""
+        r = self.reaction_rates[reaction]
+        if r.max() <= 0:
+            return float("nan")
+        j = len(r) - 1 - int(np.argmax(r[::-1] >= fraction * r.max()))
+        return float(self.z[j])
+
+    @property
+    def gas_outlet_temperature(self) -> float:
+        return float(self.t_gas_nodes[0])
+
+    @property
+    def bed_outlet_temperature(self) -> float:
+        return float(self.t_bed_nodes[-1])
+
+    def summary(self) -> dict:
+        """Scalars: outlet states, burn-off, conversions, onsets, balances, solver figures."""
+        out = {
+            "name": self.name,
+            "bed_outlet_temperature_K": self.bed_outlet_temperature,
+            "gas_outlet_temperature_K": self.gas_outlet_temperature,
+            "bed_max_temperature_K": float(self.t_bed_nodes.max()),
+            "gas_max_temperature_K": float(self.t_gas_nodes.max()),
+            "gas_min_temperature_K": float(self.t_gas_nodes.min()),
+            "burn_off_percent": self.burn_off,
+            "production_percent": self.production,
+            "gas_outlet_flow_kg_s": float(sum(v[0] for v in self.gas_flows.values())),
+            "solids_outlet_flow_kg_s": float(sum(v[-1] for v in self.bed_flows.values())),
+            "reaction_heat_W": self.reaction_heat,
+            "shell_loss_W": self.shell_loss,
+            "heat_to_solids_W": self.heat_to_solids,
+            "energy_balance_closure": self.energy_closure,
+            "element_balance_closure": max(self.element_closure.values(), default=0.0),
+            "residence_time_s": self.residence_time,
+            "fill": self.fill,
+            "newton_iterations": self.iterations,
+            "residual": self.residual,
+        }
+        for s, q in self.bed_flows.items():
+            if s != MOISTURE and q[0] > 0 and q[-1] < q[0]:
+                out[f"conversion_{s}"] = float(1.0 - q[-1] / q[0])
+        for r in self.reaction_rates:
+            z_on, t_on = self.onset(r)
+            out[f"onset_z_m_{r}"] = z_on
+            out[f"onset_T_bed_K_{r}"] = t_on
+            out[f"end_z_m_{r}"] = self.end(r)
+        return out
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per face: position, temperatures (wall, rates at cell centres interpolated)."""
+        data = {
+            "z_m": self.z_nodes,
+            "T_bed_K": self.t_bed_nodes,
+            "T_gas_K": self.t_gas_nodes,
+            "T_wall_K": np.interp(self.z_nodes, self.z, self.t_wall),
+        }
+        for s, q in self.bed_flows.items():
+            data[f"bed_{s}_kg_s"] = q
+        for s, q in self.gas_flows.items():
+            data[f"gas_{s}_kg_s"] = q
+        for r, v in self.reaction_rates.items():
+            data[f"rate_{r}_kg_s_m"] = np.interp(self.z_nodes, self.z, v)
+        for key, v in self.fluxes.items():
+            if key.startswith("q_"):
+                data[f"{key}_W_per_m"] = np.interp(self.z_nodes, self.z, np.asarray(v))
+        return pd.DataFrame(data)
+
+    def plot(self, ax=None):
+        """Temperatures (left) and solids and gas flows (right); returns the Figure."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+        else:
+            fig = np.atleast_1d(ax)[0].figure
+        a0, a1 = np.atleast_1d(ax)[:2]
+        a0.plot(self.z_nodes, self.t_gas_nodes, color="tab:red", label="gas")
+        a0.plot(self.z_nodes, self.t_bed_nodes, color="tab:brown", label="bed")
+        a0.plot(self.z, self.t_wall, color="tab:gray", label="wall")
+        a0.set_xlabel("z from solids inlet (m)")
+        a0.set_ylabel("temperature (K)")
+        a0.set_title(self.name)
+        a0.legend(fontsize=8)
+        for s, q in self.bed_flows.items():
+            if np.ptp(q) > 0 or q[0] > 0:
+                a1.plot(self.z_nodes, q * 1e3, label=f"bed {s}")
+        for s, q in self.gas_flows.items():
+            if np.ptp(q) > 0:
+                a1.plot(self.z_nodes, q * 1e3, ls="--", label=f"gas {s}")
+        a1.set_xlabel("z from solids inlet (m)")
+        a1.set_ylabel("mass flow (g/s)")
+        a1.set_title(f"burn-off {self.burn_off:.2f} % (dry)")
+        a1.legend(fontsize=7, ncol=2)
+        fig.tight_layout()
+        return fig
