@@ -51,7 +51,7 @@ class GasMixture:
     >>> g = GasMixture.of(("N2", "CO2"))
     >>> h = g.species_enthalpy(np.array([1000.0]))   # J/kg of each species
     >>> [round(float(v) / 1e3) for v in h[0]]
-    [740, 771]
+    [766, 759]
     """
 
     names: tuple[str, ...]
