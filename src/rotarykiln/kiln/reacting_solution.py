@@ -71,6 +71,18 @@ class ReactingSolution:
         q = self.bed_flows[species]
         return 1.0 - q / q[0] if q[0] > 0 else np.zeros_like(q)
 
+    def position_of_conversion(self, species: str, conversion: float) -> float:
+        """First z (m) where the conversion of ``species`` reaches ``conversion``."""
+        x = np.maximum.accumulate(self.conversion(species))
+        if conversion > x[-1]:
+            return float("nan")
+        j = int(np.argmax(x >= conversion))
+        if j == 0:
+            return 0.0
+        x0, x1 = x[j - 1], x[j]
+        f = (conversion - x0) / (x1 - x0) if x1 > x0 else 1.0
+        return float(self.z_nodes[j - 1] + f * (self.z_nodes[j] - self.z_nodes[j - 1]))
+
     def onset(self, reaction: str, fraction: float = 0.01) -> tuple[float, float]:
         """First cell (z, T_bed) where ``reaction`` exceeds ``fraction`` of its peak rate."""
         r = self.reaction_rates[reaction]
@@ -120,7 +132,14 @@ class ReactingSolution:
         }
         for s, q in self.bed_flows.items():
             if s != MOISTURE and q[0] > 0 and q[-1] < q[0]:
-                out[f"conversion_{s}"] = float(1.0 - q[-1] / q[0])
+                x = self.conversion(s)
+                out[f"conversion_{s}"] = float(x[-1])
+                for label, frac in (("1pct", 0.01), ("99pct", 0.99)):
+                    z = self.position_of_conversion(s, frac * x[-1])
+                    out[f"z_conversion_{label}_{s}_m"] = z
+                    out[f"T_bed_conversion_{label}_{s}_K"] = float(
+                        np.interp(z, self.z_nodes, self.t_bed_nodes)
+                    )
         for r in self.reaction_rates:
             z_on, t_on = self.onset(r)
             out[f"onset_z_m_{r}"] = z_on

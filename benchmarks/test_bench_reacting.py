@@ -1,0 +1,44 @@
+"""Reacting kiln speed: one converged solve (100 cells), and a 100-case sweep on 2 processes."""
+
+import yaml
+
+from rotarykiln.case import parse_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.kiln.reacting import reacting_kiln_from_case, reacting_sweep_model
+from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.studies import grid, run_sweep
+
+
+def _data(name):
+    return yaml.safe_load(builtin_case_path(name).read_text(encoding="utf-8"))
+
+
+def test_bench_reacting_solve_limestone_100_cells(benchmark):
+    kiln, _ = reacting_kiln_from_case(parse_case(_data("limestone_calcination")))
+    solve_reacting(kiln, 100)  # gas tables (Cantera) built once, outside the timing
+    sol = benchmark(solve_reacting, kiln, 100)
+    assert sol.conversion("CaCO3")[-1] > 0.999
+
+
+def test_bench_reacting_solve_charcoal_100_cells(benchmark):
+    kiln, _ = reacting_kiln_from_case(parse_case(_data("charcoal_activation")))
+    solve_reacting(kiln, 100)
+    sol = benchmark(solve_reacting, kiln, 100)
+    assert sol.burn_off > 0
+
+
+def test_bench_reacting_sweep_100_cases_2_processes(benchmark):
+    design = grid(
+        {
+            "chemistry.residence_time": [f"{t} s" for t in range(3000, 10000, 700)],
+            "chemistry.gas.steam_flow": [f"{0.001 * k:.3f} kg/s" for k in range(1, 11)],
+        }
+    )
+    res = benchmark.pedantic(
+        run_sweep,
+        args=(reacting_sweep_model, _data("charcoal_activation"), design),
+        kwargs={"max_workers": 2},
+        rounds=1,
+        iterations=1,
+    )
+    assert len(res.frame) == 100 and res.n_failed == 0
