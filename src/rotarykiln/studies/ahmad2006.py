@@ -15,7 +15,14 @@ import yaml
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.studies.design import CaseSpec, one_at_a_time
 
-__all__ = ["CHAPTER5_RANGES", "CHAPTER5_DIRECTIONS", "ahmad_chapter5_design", "builtin_case"]
+__all__ = [
+    "CHAPTER5_RANGES",
+    "CHAPTER5_DIRECTIONS",
+    "ahmad_chapter5_design",
+    "builtin_case",
+    "chapter5_directions",
+    "run_chapter5",
+]
 
 #: Field path -> values swept (as in the case file, with units).
 CHAPTER5_RANGES = {
@@ -82,3 +89,41 @@ def builtin_case(name: str) -> dict:
     path = builtin_case_path(name)
     with open(path, encoding="utf-8") as fh:
         return yaml.safe_load(fh)
+
+
+def run_chapter5(max_workers: int | None = 2, ranges: dict | None = None):
+    """Seed 004's chapter-5 study on the reacting kiln model (charcoal case), one table.
+
+    Returns the :class:`~rotarykiln.studies.result.SweepResult` of
+    :func:`rotarykiln.kiln.reacting.reacting_sweep_model` over :func:`ahmad_chapter5_design`.
+    """
+    from rotarykiln.kiln.reacting import reacting_sweep_model
+    from rotarykiln.studies.runner import run_sweep
+
+    return run_sweep(
+        reacting_sweep_model,
+        builtin_case("charcoal_activation"),
+        ahmad_chapter5_design(ranges),
+        max_workers=max_workers,
+    )
+
+
+def chapter5_directions(result, output: str = "burn_off_percent", threshold: float = 0.5):
+    """Sign of the change of ``output`` over each swept parameter (last minus first value).
+
+    Changes smaller than ``threshold`` (in the output's units) count as 0 ("insignificant").
+    Returns a dict path -> (sign, change, first, last).
+    """
+    import numpy as np
+
+    frame = result.frame
+    out = {}
+    for path in CHAPTER5_RANGES:
+        rows = frame[frame["group"] == path].sort_values(f"{path} [SI]")
+        if rows.empty or rows[output].isna().all():
+            continue
+        first, last = float(rows[output].iloc[0]), float(rows[output].iloc[-1])
+        change = last - first
+        sign = 0 if abs(change) < threshold else int(np.sign(change))
+        out[path] = (sign, change, first, last)
+    return out
