@@ -36,3 +36,34 @@ def test_gas_flow_direction_departs_from_seed_004(study):
     sign, change, first, last = chapter5_directions(study)["chemistry.gas.inlet_flow"]
     assert CHAPTER5_DIRECTIONS["chemistry.gas.inlet_flow"] == -1
     assert sign == +1 and last > first
+
+
+def test_gas_flow_at_fixed_firing_reproduces_seed_004_direction():
+    # same enthalpy input G h(T_in) as the nominal case: more gas = colder inlet gas; above
+    # ~0.03 kg/s the bed no longer reaches the 1073 K onset and burn-off falls to 0 % (seed 004)
+    import numpy as np
+    from scipy.optimize import brentq
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.kiln.gas_mixture import GasMixture
+    from rotarykiln.kiln.reacting import run_reacting_case
+    from rotarykiln.studies.ahmad2006 import builtin_case
+
+    base = builtin_case("charcoal_activation")
+    comp = base["chemistry"]["gas"]["composition"]
+    mix = GasMixture.of(tuple(comp))
+    y = np.array(list(comp.values()))
+
+    def h(t):
+        return float(mix.species_enthalpy(np.array([t]))[0] @ y)
+
+    firing = 0.020 * h(1381.0)
+    burn = []
+    for g in (0.015, 0.020, 0.045):
+        t_in = brentq(lambda t, g=g: g * h(t) - firing, 300.0, 3000.0)
+        case = builtin_case("charcoal_activation")
+        case["chemistry"]["gas"]["inlet_flow"] = f"{g} kg/s"
+        case["chemistry"]["gas"]["inlet_temperature"] = f"{t_in} K"
+        burn.append(run_reacting_case(parse_case(case)).burn_off)
+    assert burn[0] > burn[1] > 1.0
+    assert abs(burn[2]) < 1e-6
