@@ -112,6 +112,9 @@ def solve_reacting(
         if not np.all(np.isfinite(arr)):
             j = int(np.argmax(~np.isfinite(arr)))
             raise ConvergenceError(f"non-finite {key} in cell {j} (z = {res.z[j]:.4g} m)")
+    # validity ranges of the heat-transfer closures, checked once on the converged state
+    g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
+    res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True)
     # global balances
     dz = res.dz
     hb = res.cp_bed * (tb_n[:, None] - T_REF)
