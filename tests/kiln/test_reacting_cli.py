@@ -108,3 +108,30 @@ def test_unbalanced_reaction_message_names_the_atoms(capsys, tmp_path):
     code, _, err = _run(capsys, tmp_path, data)
     assert code == 2
     assert "O -1 atoms per event" in err and "element-balanced" in err
+
+
+def test_sweep_command_with_the_kiln_model(capsys, tmp_path):
+    code = main(
+        [
+            "sweep",
+            "--case",
+            "charcoal_activation",
+            "--model",
+            "rotarykiln.kiln.reacting:reacting_sweep_model",
+            "--oat",
+            "chemistry.gas.steam_flow=0.0025 kg/s,0.0075 kg/s",
+            "--workers",
+            "2",
+            "--out",
+            str(tmp_path),
+            "--name",
+            "steam",
+            "--json",
+        ]
+    )
+    out, _ = capsys.readouterr()
+    assert code == 0
+    rows = json.loads(out)
+    burn = {r["chemistry.gas.steam_flow"]: r["burn_off_percent"] for r in rows}
+    assert burn["0.0025 kg/s"] < burn["0.0075 kg/s"]  # steam is a reactant (seed 004 Fig. 5.4)
+    assert (tmp_path / "steam.csv").exists() and (tmp_path / "steam.png").exists()
