@@ -25,7 +25,7 @@ test: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python -m pytest -q
 
 bench: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -p no:doctest -q
+	MPLBACKEND=Agg $(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -q --benchmark-columns=median,iqr,rounds
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks

@@ -84,7 +84,7 @@ def fill_from_half_angle(theta):
     return _x_minus_sin(2.0 * theta) / (2.0 * np.pi)
 
 
-def half_angle_from_fill(fill, *, tol: float = 1e-15, max_iter: int = 60):
+def half_angle_from_fill(fill, *, tol: float = 1e-11, max_iter: int = 60):
     r"""Half-angle of the bed from the fill fraction (inverse of :func:`fill_from_half_angle`).
 
     Solves :math:`2\theta - \sin 2\theta = 2\pi f` by Newton's method safeguarded by a bracket
@@ -115,7 +115,7 @@ def half_angle_from_fill(fill, *, tol: float = 1e-15, max_iter: int = 60):
     target = 2.0 * np.pi * f
     # starting guess: small-angle series x^3/6 = target, clipped to the bracket
     lo = np.zeros_like(f)
-    hi = np.full_like(f, np.pi / 2)
+    hi = np.full_like(f, np.pi)  # g is monotone on [0, pi]: the root pi/2 of f = 1/2 stays inside
     x = np.clip(np.cbrt(6.0 * target) / 2.0, 0.0, np.pi / 2)
     for _ in range(max_iter):
         g = _x_minus_sin(2.0 * x) - target
@@ -125,12 +125,19 @@ def half_angle_from_fill(fill, *, tol: float = 1e-15, max_iter: int = 60):
         with np.errstate(divide="ignore", invalid="ignore"):
             step = np.where(dg > 0, g / dg, np.inf)
         x_new = x - step
-        outside = ~((x_new > lo) & (x_new < hi)) | ~np.isfinite(x_new)
-        x_new = np.where(outside, 0.5 * (lo + hi), x_new)
-        done = np.abs(x_new - x) <= tol * np.maximum(1.0, x)
-        x = x_new
-        if np.all(done | (g == 0)):
+        inside = (x_new >= lo) & (x_new <= hi) & np.isfinite(x_new)
+        small = np.abs(step) <= tol * np.maximum(1.0, x)
+        # outside the bracket: bisect, unless the step is round-off (collapsed bracket)
+        x = np.where(inside, x_new, np.where(small, x, 0.5 * (lo + hi)))
+        if np.all(small | (g == 0)):
             break
+    # Newton converges quadratically: once the step is below ``tol`` one more step reaches
+    # machine precision (a tighter stopping test would only chase round-off).
+    g = _x_minus_sin(2.0 * x) - target
+    dg = 2.0 * (1.0 - np.cos(2.0 * x))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        polished = x - g / dg
+    x = np.where((polished >= lo) & (polished <= hi), polished, x)
     x = np.where(f == 0, 0.0, x)
     return np.where(fill > 0.5, np.pi - x, x)
 

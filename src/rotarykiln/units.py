@@ -13,6 +13,7 @@ arctan.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -87,9 +88,25 @@ def _describe(q: pint.Quantity) -> str:
     return f"{article} {name}"
 
 
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+_BARE_POWER = re.compile(r"(?<=[A-Za-z])([23])(?![\d.])")
+
+
+def _normalise(text: str) -> tuple[str, bool]:
+    """Engineer-typed units to pint syntax ("kg/m3" -> "kg/m**3"); also says if unit-less."""
+    m = _NUMBER.match(text)
+    if not m:
+        return text.strip(), False
+    number, unit = m.group(1), m.group(2)
+    if not unit:
+        return number, True
+    unit = _BARE_POWER.sub(r"**\1", unit)
+    return f"{number} {unit}", False
+
+
 def _parse(field: str, text: str) -> pint.Quantity:
     try:
-        q = ureg.Quantity(text.strip())
+        q = ureg.Quantity(_normalise(text)[0])
     except Exception:  # pint raises many types for garbage: report them all the same way
         raise InputError(
             field,
@@ -146,7 +163,7 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
     if kind == "angle":
         units = str(q.units)
         if q.dimensionless and not any(a in units for a in _ANGLE_UNITS):
-            if q.unitless:
+            if _normalise(value)[1]:
                 raise InputError(
                     field,
                     message=f'{field}: "{value}" needs a unit (deg, rad, or % / m/m for a grade)',

@@ -1,0 +1,5 @@
+import sys
+
+from rotarykiln.cli import main
+
+sys.exit(main())

@@ -1,0 +1,284 @@
+"""Case files: YAML with units in, validated SI objects out.
+
+A case file gives physical values as strings with units; pydantic models convert each one once to
+an SI float. Unknown keys are rejected. Any error becomes one :class:`~rotarykiln.errors.InputError`
+line naming the field path, the value and what is accepted, e.g.::
+
+    kiln.diameter: -0.4 m is not > 0
+    operation.speed: "3 m" is a length, expected a rotation rate
+
+Example case::
+
+    name: limestone pilot kiln
+    kiln:
+      length: 5.5 m
+      diameter: 0.406 m
+      slope: 1.72 deg
+    operation:
+      speed: 1.5 rpm
+      feed: 42 kg/h
+    material:
+      name: limestone
+      bulk_density: 1500 kg/m3
+      repose_angle: 35 deg
+
+Sections of the physics packages (``bed``, ``transport``, ``rtd``, ``heat`` ...) are optional
+fields of :class:`Case`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+from typing import Annotated, Any
+
+import yaml
+from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
+from pydantic_core import PydanticCustomError
+
+from rotarykiln.errors import InputError
+from rotarykiln.units import to_si
+
+__all__ = [
+    "Angle",
+    "Bed",
+    "Case",
+    "Density",
+    "Fraction",
+    "HeatTransferCoefficient",
+    "Kiln",
+    "Length",
+    "MassFlow",
+    "Material",
+    "Operation",
+    "Power",
+    "Pressure",
+    "RotationRate",
+    "Section",
+    "SpecificHeat",
+    "Temperature",
+    "ThermalConductivity",
+    "Time",
+    "Velocity",
+    "VolumetricFlow",
+    "load_case",
+    "parse_case",
+    "quantity",
+]
+
+
+class Section(BaseModel):
+    """Base of every case-file section: unknown keys are rejected, models are frozen."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+def _bound_text(gt, ge, lt, le) -> str:
+    parts = []
+    if gt is not None:
+        parts.append(f"> {gt:g}")
+    if ge is not None:
+        parts.append(f">= {ge:g}")
+    if lt is not None:
+        parts.append(f"< {lt:g}")
+    if le is not None:
+        parts.append(f"<= {le:g}")
+    return " and ".join(parts)
+
+
+def quantity(
+    kind: str,
+    *,
+    gt: float | None = None,
+    ge: float | None = None,
+    lt: float | None = None,
+    le: float | None = None,
+    shown: str | None = None,
+):
+    """An annotated float field that accepts ``"1.5 rpm"``-style strings and stores SI.
+
+    Bounds apply to the SI value; ``shown`` (e.g. ``"< 90 deg"``) replaces the bound text in
+    messages when the SI bound would read oddly.
+    """
+
+    def convert(value: Any) -> float:
+        try:
+            si = to_si("", value, kind)
+        except InputError as exc:
+            raise PydanticCustomError("quantity", str(exc).removeprefix(": ")) from None
+        ok = (
+            (gt is None or si > gt)
+            and (ge is None or si >= ge)
+            and (lt is None or si < lt)
+            and (le is None or si <= le)
+            and math.isfinite(si)
+        )
+        if not ok:
+            raise PydanticCustomError(
+                "quantity_range",
+                "{value} is not {bound}",
+                {"value": value, "bound": shown or _bound_text(gt, ge, lt, le)},
+            )
+        return si
+
+    return Annotated[float, BeforeValidator(convert)]
+
+
+Length = quantity("length", gt=0)
+Angle = quantity("angle", ge=-math.pi / 2, le=math.pi / 2, shown="in [-90, 90] deg")
+RotationRate = quantity("rotation rate", gt=0)
+MassFlow = quantity("mass flow", ge=0)
+VolumetricFlow = quantity("volumetric flow", ge=0)
+Temperature = quantity("temperature", gt=0, shown="> 0 K")
+Density = quantity("density", gt=0)
+Time = quantity("time", gt=0)
+Velocity = quantity("velocity", ge=0)
+Fraction = quantity("fraction", ge=0, le=1)
+Power = quantity("power")
+Pressure = quantity("pressure", gt=0)
+ThermalConductivity = quantity("thermal conductivity", gt=0)
+SpecificHeat = quantity("specific heat", gt=0)
+HeatTransferCoefficient = quantity("heat transfer coefficient", ge=0)
+
+Slope = quantity("angle", ge=0, lt=math.radians(45), shown="in [0, 45) deg")
+ReposeAngle = quantity("angle", gt=0, lt=math.radians(90), shown="in (0, 90) deg")
+FillFraction = quantity("fraction", gt=0, lt=1, shown="in (0, 1)")
+
+
+class Kiln(Section):
+    """The drum: inner length and diameter, slope of its axis."""
+
+    length: Length
+    diameter: Length
+    slope: Slope = 0.0
+
+
+class Operation(Section):
+    """Operating point: rotation speed and solids feed (mass flow)."""
+
+    speed: RotationRate
+    feed: MassFlow | None = None
+
+
+class Material(Section):
+    """The bulk solid."""
+
+    name: str = "solid"
+    bulk_density: Density | None = None
+    repose_angle: ReposeAngle | None = None
+    static_repose_angle: ReposeAngle | None = None
+    particle_size: Length | None = None
+    wall_friction: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+
+
+def _positive_number(v: Any) -> float:
+    if isinstance(v, bool) or not isinstance(v, int | float) or not v > 0:
+        raise PydanticCustomError("number", "{value} is not a number > 0", {"value": v})
+    return float(v)
+
+
+class Bed(Section):
+    """A fixed bed fill, used by models that do not compute the bed profile."""
+
+    fill: FillFraction
+
+
+class Case(Section):
+    """A complete case file."""
+
+    name: str = "case"
+    description: str = ""
+    kiln: Kiln
+    operation: Operation
+    material: Material = Material()
+    bed: Bed | None = None
+
+
+def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:
+    """The pydantic model class that owns the field at ``loc`` (without its last element)."""
+    current: Any = model
+    for part in loc[:-1]:
+        if not (isinstance(current, type) and issubclass(current, BaseModel)):
+            return None
+        info = current.model_fields.get(part)
+        if info is None:
+            return None
+        current = _unwrap(info.annotation)
+    return current if isinstance(current, type) and issubclass(current, BaseModel) else None
+
+
+def _unwrap(annotation: Any) -> Any:
+    args = getattr(annotation, "__args__", None)
+    if args:
+        for a in args:
+            if isinstance(a, type) and issubclass(a, BaseModel):
+                return a
+    return annotation
+
+
+def _format_error(model: type[BaseModel], err: dict) -> str:
+    loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and p.startswith("function-")))
+    path = ".".join(str(p) for p in loc) or "(top level)"
+    kind = err["type"]
+    if kind == "extra_forbidden":
+        owner = _model_at(model, loc)
+        accepted = ", ".join(owner.model_fields) if owner else ""
+        return f"{path}: unknown key (accepted keys: {accepted})"
+    if kind == "missing":
+        return f"{path}: missing (required)"
+    if kind in ("model_type", "dict_type"):
+        return f"{path}: expected a mapping of keys, got {err.get('input')!r}"
+    msg = err["msg"]
+    msg = re.sub(r"^Value error, ", "", msg)
+    if kind in ("quantity", "quantity_range", "number"):
+        return f"{path}: {msg}"
+    return f"{path}: {err.get('input')!r}: {msg}"
+
+
+def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case) -> Case:
+    """Validate a mapping (parsed YAML) into a :class:`Case`.
+
+    Raises
+    ------
+    InputError
+        One line: the first problem found, with a count of the others.
+    """
+    if not isinstance(data, dict):
+        raise InputError(source, message=f"{source}: expected a mapping of sections, got {data!r}")
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        errors = exc.errors()
+        first = _format_error(model, errors[0])
+        more = f" (and {len(errors) - 1} more problem{'s' if len(errors) > 2 else ''})"
+        message = first + (more if len(errors) > 1 else "")
+        path = first.split(":", 1)[0]
+        raise InputError(path, message=message) from None
+
+
+def load_case(path: str | Path) -> Case:
+    """Read and validate a YAML case file.
+
+    Examples
+    --------
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> case = load_case(builtin_case_path("demo"))
+    >>> round(case.operation.speed, 4)
+    0.1571
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError(str(path), message=f"{path}: no such case file") from None
+    except OSError as exc:
+        raise InputError(str(path), message=f"{path}: cannot read ({exc.strerror})") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        raise InputError(str(path), message=f"{path}: malformed YAML{where}: {problem}") from None
+    return parse_case(data, source=str(path))

@@ -1,0 +1,77 @@
+"""The ``rotarykiln`` command.
+
+Subcommands live in :mod:`rotarykiln.commands`, one module each; a module defines
+``register(subparsers)`` (adding its parser and ``set_defaults(func=run)``) and ``run(args) -> int``.
+The CLI discovers them, so a new physics package adds its command without touching this file.
+
+User mistakes (:class:`~rotarykiln.errors.InputError`) print one line and exit with code 2, without a
+traceback; a failed solve (:class:`~rotarykiln.errors.ConvergenceError`) prints its diagnostics and
+exits with code 1. Warnings print as one ``warning:`` line each.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import pkgutil
+import sys
+import warnings
+
+from rotarykiln import __version__, commands
+from rotarykiln.errors import ConvergenceError, InputError
+
+__all__ = ["build_parser", "main"]
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that reports a usage error as one line and exits 2."""
+
+    def error(self, message: str):  # noqa: D401 - argparse API
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(
+        prog="rotarykiln",
+        description="Simulate rotary kilns and rotating drums. Quantities take units: "
+        '"--diameter 0.4 m --speed 1.5 rpm --slope 2 deg --feed 62 kg/h".',
+    )
+    parser.add_argument("--version", action="version", version=f"rotarykiln {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda m: m.name):
+        if info.name.startswith("_"):
+            continue
+        module = importlib.import_module(f"{commands.__name__}.{info.name}")
+        module.register(sub)
+    return parser
+
+
+def _show_warning(message, category, filename, lineno, file=None, line=None):
+    print(f"warning: {message}", file=sys.stderr)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 2
+    previous = warnings.showwarning
+    warnings.showwarning = _show_warning
+    try:
+        return int(args.func(args) or 0)
+    except InputError as exc:
+        print(f"rotarykiln {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except ConvergenceError as exc:
+        print(f"rotarykiln {args.command}: solver failed: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("rotarykiln: interrupted", file=sys.stderr)
+        return 130
+    finally:
+        warnings.showwarning = previous
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

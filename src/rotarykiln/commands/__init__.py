@@ -1,0 +1,1 @@
+"""Subcommands of the ``rotarykiln`` CLI, one module each (see :mod:`rotarykiln.cli`)."""

@@ -1,0 +1,44 @@
+"""Shared helpers for subcommands: quantity arguments with units, output of results."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from rotarykiln.errors import InputError
+from rotarykiln.outputs import to_json
+from rotarykiln.units import to_si
+
+__all__ = ["add_quantity", "get_quantity", "print_json", "out_dir"]
+
+
+def add_quantity(parser: argparse.ArgumentParser, name: str, help: str, **kwargs) -> None:
+    """Add ``--name VALUE [UNIT]``: both ``--speed 5 rpm`` and ``--speed 5rpm`` work."""
+    parser.add_argument(f"--{name}", nargs="+", metavar="VALUE UNIT", help=help, **kwargs)
+
+
+def get_quantity(args: argparse.Namespace, name: str, kind: str, *, required: bool = False):
+    """The SI value of quantity option ``--name`` (``None`` when absent and not required)."""
+    tokens = getattr(args, name.replace("-", "_"))
+    if tokens is None:
+        if required:
+            raise InputError(f"--{name}", message=f"--{name}: missing (required)")
+        return None
+    text = " ".join(tokens) if isinstance(tokens, list) else str(tokens)
+    return to_si(f"--{name}", text, kind)
+
+
+def print_json(data) -> None:
+    print(to_json(data))
+
+
+def out_dir(path: str | None, default: str) -> Path:
+    """The output folder (created)."""
+    p = Path(path or default)
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(
+            "--out", str(p), message=f"--out: cannot create {p} ({exc.strerror})"
+        ) from None
+    return p

@@ -1,0 +1,29 @@
+"""``rotarykiln demo``: run the main built-in example and write its results and plots."""
+
+from __future__ import annotations
+
+import argparse
+
+from rotarykiln.case import load_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.commands._args import out_dir
+from rotarykiln.commands.run import run_case
+from rotarykiln.outputs import write_text_atomic
+from rotarykiln.report import format_table
+
+
+def register(sub) -> None:
+    p = sub.add_parser("demo", help="run the built-in demonstration case")
+    p.add_argument("--out", default="demo-output", help="output folder (default: demo-output)")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    path = builtin_case_path("demo")
+    case = load_case(path)
+    out = out_dir(args.out, "demo-output")
+    write_text_atomic(out / "case.yaml", path.read_text(encoding="utf-8"))
+    summary = run_case(case, out)
+    print(format_table(summary))
+    print(f"\ndemo results written to {out}/")
+    return 0

@@ -1,0 +1,63 @@
+"""``rotarykiln run CASE.yaml``: validate a case, run the models its sections ask for, write results.
+
+Section runners are looked up in :data:`RUNNERS` (section name -> "module:function"); each takes the
+validated case and the output folder and returns a dict of summary values to merge.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+from pathlib import Path
+
+from rotarykiln.case import load_case
+from rotarykiln.commands._args import out_dir, print_json
+from rotarykiln.outputs import save_figure_atomic, write_json_atomic, write_text_atomic
+from rotarykiln.report import case_summary, format_table
+
+RUNNERS: dict[str, str] = {}
+"""Section name -> "module:function(case, out_dir) -> dict" run when the case has that section."""
+
+
+def register(sub) -> None:
+    p = sub.add_parser("run", help="validate a case file and run it", description=__doc__)
+    p.add_argument("case", help="case file (YAML)")
+    p.add_argument("--out", help="output folder (default: <case name>-results)")
+    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    p.add_argument("--no-plots", action="store_true", help="do not write figures")
+    p.set_defaults(func=run)
+
+
+def run_case(case, out: Path, *, plots: bool = True) -> dict:
+    """Run every model a validated case asks for; write summary and figures to ``out``."""
+    summary = case_summary(case)
+    for section, target in RUNNERS.items():
+        if getattr(case, section, None) is not None:
+            module, func = target.split(":")
+            summary.update(getattr(importlib.import_module(module), func)(case, out) or {})
+    write_json_atomic(out / "summary.json", summary)
+    write_text_atomic(out / "summary.txt", format_table(summary) + "\n")
+    if plots and case.bed is not None:
+        import matplotlib.pyplot as plt
+
+        from rotarykiln.plot import cross_section_figure, regime_map_figure
+
+        for name, fig in (
+            ("regime_map.png", regime_map_figure(case.bed.fill, summary["froude"])),
+            ("cross_section.png", cross_section_figure(case.bed.fill, case.kiln.diameter / 2)),
+        ):
+            save_figure_atomic(out / name, fig)
+            plt.close(fig)
+    return summary
+
+
+def run(args: argparse.Namespace) -> int:
+    case = load_case(args.case)
+    out = out_dir(args.out, f"{Path(args.case).stem}-results")
+    summary = run_case(case, out, plots=not args.no_plots)
+    if args.json:
+        print_json(summary)
+    else:
+        print(format_table(summary))
+        print(f"\nresults written to {out}/")
+    return 0

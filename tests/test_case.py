@@ -1,0 +1,100 @@
+import math
+import textwrap
+
+import pytest
+import yaml
+
+from rotarykiln.case import load_case, parse_case
+from rotarykiln.cases import builtin_case_path, list_builtin_cases
+from rotarykiln.errors import InputError
+
+GOOD = {
+    "kiln": {"length": "5.5 m", "diameter": "0.406 m", "slope": "2 deg"},
+    "operation": {"speed": "1.5 rpm", "feed": "62 kg/h"},
+    "material": {"bulk_density": "1500 kg/m3", "repose_angle": "35 deg"},
+    "bed": {"fill": "12 %"},
+}
+
+
+def with_change(path: str, value):
+    data = yaml.safe_load(yaml.safe_dump(GOOD))
+    keys = path.split(".")
+    node = data
+    for k in keys[:-1]:
+        node = node[k]
+    node[keys[-1]] = value
+    return data
+
+
+def test_good_case_is_converted_to_si():
+    case = parse_case(GOOD)
+    assert case.kiln.slope == pytest.approx(math.radians(2))
+    assert case.operation.speed == pytest.approx(1.5 * 2 * math.pi / 60)
+    assert case.operation.feed == pytest.approx(62 / 3600)
+    assert case.bed.fill == pytest.approx(0.12)
+
+
+@pytest.mark.parametrize(
+    ("path", "value", "message"),
+    [
+        ("kiln.diameter", "-0.4 m", "kiln.diameter: -0.4 m is not > 0"),
+        ("operation.speed", "3 m", 'operation.speed: "3 m" is a length, expected a rotation rate'),
+        ("operation.speed", "-1 rpm", "operation.speed: -1 rpm is not > 0"),
+        ("bed.fill", 1.0, "bed.fill: 1.0 is not in (0, 1)"),
+        ("bed.fill", "120 %", "bed.fill: 120 % is not in (0, 1)"),
+        (
+            "kiln.diamter",
+            "0.4 m",
+            "kiln.diamter: unknown key (accepted keys: length, diameter, slope)",
+        ),
+        ("material.repose_angle", "95 deg", "material.repose_angle: 95 deg is not in (0, 90) deg"),
+    ],
+)
+def test_bad_values_give_one_clear_line(path, value, message):
+    with pytest.raises(InputError) as info:
+        parse_case(with_change(path, value))
+    text = str(info.value)
+    assert "\n" not in text
+    assert text.startswith(message)
+
+
+def test_missing_section():
+    data = dict(GOOD)
+    del data["kiln"]
+    with pytest.raises(InputError, match="^kiln: missing"):
+        parse_case(data)
+
+
+def test_malformed_yaml(tmp_path):
+    p = tmp_path / "bad.yaml"
+    p.write_text("kiln:\n  length: 5 m\n   diameter: [0.4 m\n")
+    with pytest.raises(InputError, match="malformed YAML at line"):
+        load_case(p)
+
+
+def test_missing_file(tmp_path):
+    with pytest.raises(InputError, match="no such case file"):
+        load_case(tmp_path / "nope.yaml")
+
+
+def test_not_a_mapping(tmp_path):
+    p = tmp_path / "list.yaml"
+    p.write_text("- a\n- b\n")
+    with pytest.raises(InputError, match="expected a mapping"):
+        load_case(p)
+
+
+def test_every_builtin_case_validates():
+    names = list_builtin_cases()
+    assert "demo" in names
+    for name in names:
+        text = builtin_case_path(name).read_text()
+        data = yaml.safe_load(text)
+        if isinstance(data, dict) and "kiln" in data:
+            parse_case(data)
+
+
+def test_load_case_from_file(tmp_path):
+    p = tmp_path / "c.yaml"
+    p.write_text(textwrap.dedent(yaml.safe_dump(GOOD)))
+    assert load_case(p).kiln.length == 5.5

@@ -1,0 +1,133 @@
+import json
+import subprocess
+import sys
+
+import pytest
+
+from rotarykiln.cli import main
+
+
+def run_cli(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_regime_check_point(capsys):
+    code, out, _ = run_cli(
+        capsys, "regime", "--diameter", "6", "m", "--speed", "5", "rpm", "--fill", "0.3", "--json"
+    )
+    assert code == 0
+    data = json.loads(out)
+    assert round(data["froude"], 3) == 0.084
+    assert round(data["fraction_of_critical"], 2) == 0.29
+    assert data["regime"] == "cascading" and data["criterion"].startswith("mellmann")
+    assert data["regime_by_henein"] == "rolling"
+
+
+def test_regime_text_and_plot(capsys, tmp_path):
+    png = tmp_path / "map.png"
+    code, out, _ = run_cli(
+        capsys,
+        "regime",
+        "--radius",
+        "0.2m",
+        "--speed",
+        "3rpm",
+        "--depth",
+        "5 cm",
+        "--plot",
+        str(png),
+    )
+    assert code == 0 and "froude" in out and png.stat().st_size > 1000
+
+
+def test_geometry_json(capsys):
+    code, out, _ = run_cli(
+        capsys, "geometry", "--diameter", "2", "m", "--depth", "1", "m", "--json"
+    )
+    assert code == 0
+    assert json.loads(out)["fill"] == pytest.approx(0.5)
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        (["regime", "--diameter", "6", "m", "--speed", "3", "m", "--fill", "0.3"], "is a length"),
+        (["regime", "--diameter", "6", "m", "--speed", "-5", "rpm", "--fill", "0.3"], "--speed"),
+        (["regime", "--diameter", "-6", "m", "--speed", "5", "rpm", "--fill", "0.3"], "not > 0"),
+        (["regime", "--diameter", "6", "m", "--speed", "5", "rpm", "--fill", "1.0"], "(0, 1)"),
+        (["geometry", "--diameter", "1", "m"], "give exactly one"),
+        (
+            ["geometry", "--diameter", "1", "m", "--fill", "0.2", "--depth", "0.1", "m"],
+            "exactly one",
+        ),
+        (["run", "does-not-exist.yaml"], "no such case file"),
+    ],
+)
+def test_bad_input_exits_2_with_one_line(capsys, argv, needle):
+    code, _, err = run_cli(capsys, *argv)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and needle in lines[0]
+    assert "Traceback" not in err
+
+
+def test_bad_case_file_through_cli(capsys, tmp_path):
+    p = tmp_path / "c.yaml"
+    p.write_text("kiln: {length: 5 m, diameter: 0.4 m, colour: red}\noperation: {speed: 2 rpm}\n")
+    code, _, err = run_cli(capsys, "run", str(p))
+    assert code == 2 and "kiln.colour: unknown key" in err
+    p.write_text("kiln: [\n")
+    code, _, err = run_cli(capsys, "run", str(p))
+    assert code == 2 and "malformed YAML" in err
+
+
+def test_run_writes_summary(capsys, tmp_path):
+    p = tmp_path / "c.yaml"
+    p.write_text(
+        "kiln: {length: 5 m, diameter: 0.4 m, slope: 1 deg}\n"
+        "operation: {speed: 2 rpm, feed: 50 kg/h}\nbed: {fill: 0.1}\n"
+    )
+    code, out, _ = run_cli(capsys, "run", str(p), "--out", str(tmp_path / "res"))
+    assert code == 0
+    summary = json.loads((tmp_path / "res" / "summary.json").read_text())
+    assert summary["fill"] == pytest.approx(0.1)
+    assert (tmp_path / "res" / "regime_map.png").exists()
+    assert not list((tmp_path / "res").glob(".*"))  # no temporary files left behind
+
+
+def test_demo(capsys, tmp_path):
+    code, out, _ = run_cli(capsys, "demo", "--out", str(tmp_path / "demo"))
+    assert code == 0
+    assert (tmp_path / "demo" / "summary.json").exists()
+
+
+def test_console_entry_point_usage_error_exit_code():
+    proc = subprocess.run(
+        [sys.executable, "-m", "rotarykiln", "regime", "--bogus"], capture_output=True, text=True
+    )
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize(
+    ("line", "message"),
+    [
+        ("kiln: {length: 5 m, diameter: -0.4 m}", "kiln.diameter: -0.4 m is not > 0"),
+        ("kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: 3 m}", '"3 m" is a length'),
+        (
+            "kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: -2 rpm}",
+            "speed: -2 rpm is not > 0",
+        ),
+        ("kiln: {length: 5 m, diameter: 0.4 m}\nbed: {fill: 1}", "bed.fill: 1 is not in (0, 1)"),
+    ],
+)
+def test_case_value_errors_through_cli(capsys, tmp_path, line, message):
+    p = tmp_path / "c.yaml"
+    if "operation" not in line:
+        line += "\noperation: {speed: 2 rpm}"
+    p.write_text(line + "\n")
+    code, _, err = run_cli(capsys, "run", str(p))
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1 and message in err
