@@ -218,7 +218,7 @@ def simulate_grid(
     >>> from rotarykiln.transverse.grid_geometry import build_grid
     >>> g = build_grid(0.285, 9 / 60 * 2 * np.pi, 0.25)
     >>> mats = (GridMaterial("black", 1.06, [1.0]), GridMaterial("orange", 1.0, [1.0]))
-    >>> r = simulate_grid(g, [2.51e-3], mats, duration=60.0)
+    >>> r = simulate_grid(g, [2.51e-3], mats, duration=90.0)
     >>> r.mass_error < 1e-12, round(r.final_contact / r.final_contact_bed, 2)
     (True, 1.0)
     """
@@ -279,7 +279,7 @@ def simulate_grid(
     has_top = geom.top.any(axis=1)
     b_share = geom.bottom_share
     v_cv = geom.cv_velocity * geom.velocity_factor
-    feed = geom.feed_cv
+    feed_t = geom.feed.T.copy()
     cls_cols = np.concatenate([np.arange(k_cls)] * 5)  # class of each of the first 5K columns
 
     total0 = act.sum(axis=0) + stag.sum(axis=(0, 1))
@@ -356,10 +356,10 @@ def simulate_grid(
         # 2. stagnant discharge into the active layer
         sub = step % n_sub
         if sub == 0:
-            act[feed] += exit_rem
+            act += feed_t @ exit_rem
             exit_rem[:] = 0.0
         else:
-            act[feed] += exit_step
+            act += feed_t @ exit_step
             exit_rem -= exit_step
         # 3. mixing in the active CVs
         _mix(act, d, k_cls, v_cv, tau, lim)

@@ -86,7 +86,7 @@ class GridGeometry:
     bottom: np.ndarray  # (n_act, n_act + layers) weights of the bottom group, rows sum to 1 or 0
     top: np.ndarray  # (n_act, n_act + layers) weights of the top group
     bottom_share: np.ndarray  # (n_act,) flux share of the bottom group
-    feed_cv: np.ndarray  # (layers,) active CV fed by the discharge of each stagnant layer
+    feed: np.ndarray  # (layers, n_act) share of each stagnant layer's discharge per CV
     cv_centroid: np.ndarray  # (n_act, 2) m
     stagnant_centroid: np.ndarray  # (layers, zones, 2) m
     extra: dict = field(default_factory=dict)
@@ -236,7 +236,7 @@ def build_grid(
     flux = np.zeros((n_act, n_dest))
     bottom = np.zeros((n_act, n_dest))
     top = np.zeros((n_act, n_dest))
-    feed_cv = np.zeros(layers, dtype=int)
+    feed = np.zeros((layers, len(cv_area)))
     for b in range(n_az + 1):
         src_ids, src_flux = [], []
         if b < layers:  # stagnant layer b discharges at the bottom of zone b
@@ -259,7 +259,8 @@ def build_grid(
         for si, sid in enumerate(src_ids):
             row = w[si]
             if sid == -1:
-                feed_cv[b] = tgt_ids[int(np.flatnonzero(row)[0])]
+                for ti, tid in enumerate(tgt_ids):
+                    feed[b, tid] += row[ti] / layer_flux[b]
                 continue
             for ti, tid in enumerate(tgt_ids):
                 flux[sid, tid] += row[ti]
@@ -320,7 +321,7 @@ def build_grid(
         bottom=bottom,
         top=top,
         bottom_share=bottom_share,
-        feed_cv=feed_cv,
+        feed=feed,
         cv_centroid=np.stack([xc, yc], axis=-1),
         stagnant_centroid=stag_c,
         extra={"s_edges": s, "x_edges": x_edges, "origin": origin},

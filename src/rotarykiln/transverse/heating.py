@@ -264,7 +264,12 @@ def cell_heat_exchange(
     else:
         q_conv = _balance_smaller(g * (t_mean[:, None, None] - temperature))
 
-    # radiation ash (0) -> shale (1), scaled by the extent of mixing
+    # radiation ash (0) -> shale (1), scaled by the extent of mixing; evaluated on the
+    # temperatures after convection (operator splitting: neither step overshoots)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        temperature = np.where(
+            cap > 0, temperature + q_conv * dt / np.where(cap > 0, cap, 1.0), temperature
+        )
     a_ash = area[:, 0, :].sum(axis=1)
     a_sh = area[:, 1, :].sum(axis=1)
     c_ash = cap[:, 0, :].sum(axis=1)
@@ -298,7 +303,7 @@ def cell_heat_exchange(
             q_ash = q_ash * f_ash[:, None]
         # the pair may not cross its common temperature within the step
         total = q_sh.sum(axis=1) * dt
-        with np.errstate(invalid="ignore", divide="ignore"):
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             c_pair = c_ash * c_sh / np.where(c_ash + c_sh > 0, c_ash + c_sh, 1.0)
             limit = np.abs(t_ash - t_sh) * c_pair
             big = np.abs(total) > limit

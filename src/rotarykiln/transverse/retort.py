@@ -159,7 +159,7 @@ def run_retort(spec: RetortSpec) -> GridResult:
     Examples
     --------
     >>> r = run_retort(retort_case(2, duration=10.0, snapshot_times=()))
-    >>> r.mass_error < 1e-12 and r.energy_error < 1e-9
+    >>> bool(r.mass_error < 1e-12 and r.energy_error < 1e-9)
     True
     """
     check_positive("shale_to_ash", spec.shale_to_ash)
