@@ -27,13 +27,17 @@ def main():
     fig = base.plot()
     save_figure_atomic(OUT / "transverse_base_case.png", fig, dpi=80)
     plt.close(fig)
-    print("base case: peak extent %.0f %% at %.1f s, T_shale(220 s) %.1f K, volatiles %.2f %%"
-          % (100 * base.extent.max(), base.t[np.argmax(base.extent)], base.temperature[-1, 1],
-             100 * base.volatiles[-1]))
+    peak = 100 * base.extent.max()
+    t_peak = base.t[np.argmax(base.extent)]
+    print(
+        f"base case: peak extent {peak:.0f} % at {t_peak:.1f} s, "
+        f"T_shale(220 s) {base.temperature[-1, 1]:.1f} K, volatiles {100 * base.volatiles[-1]:.2f} %"
+    )
 
     fig, axes = plt.subplots(2, 2, figsize=(10, 5.5))
     for ax, (t, f) in zip(
-        axes.ravel(), [(0, "share"), (10, "extent"), (10, "temperature"), (40, "temperature")],
+        axes.ravel(),
+        [(0, "share"), (10, "extent"), (10, "temperature"), (40, "temperature")],
         strict=True,
     ):
         plot_colour_map(base, t, f, ax=ax, n=120)
@@ -42,21 +46,29 @@ def main():
     plt.close(fig)
 
     # trends: volatiles against time per group
-    groups = {"size": (1, 3, 4, 5, 6), "temperature": (7, 2, 8), "ratio": (9, 2, 10, 11, 12),
-              "speed": (13, 14, 2, 15, 16)}
+    groups = {
+        "size": (1, 3, 4, 5, 6),
+        "temperature": (7, 2, 8),
+        "ratio": (9, 2, 10, 11, 12),
+        "speed": (13, 14, 2, 15, 16),
+    }
     cases = load_table("retort_cases").set_index("case")
     fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True, sharey=True)
     for ax, (g, cs) in zip(axes.ravel(), groups.items(), strict=True):
         for c in cs:
             r = run_retort(retort_case(c, duration=120.0, snapshot_times=()))
             row = cases.loc[c]
-            lab = {"size": f"{row.shale_size_mm}/{row.ash_size_mm} mm",
-                   "temperature": f"{row.shale_T_K:g}/{row.ash_T_K:g} K",
-                   "ratio": f"shale:ash {row.shale_to_ash}",
-                   "speed": f"{row.speed_rpm:g} rpm"}[g]
+            lab = {
+                "size": f"{row.shale_size_mm}/{row.ash_size_mm} mm",
+                "temperature": f"{row.shale_T_K:g}/{row.ash_T_K:g} K",
+                "ratio": f"shale:ash {row.shale_to_ash}",
+                "speed": f"{row.speed_rpm:g} rpm",
+            }[g]
             ax.plot(r.t, 100 * r.volatiles, label=f"case {c}: {lab}")
-            print(f"case {c:2d}: volatiles at 30 s {100 * np.interp(30, r.t, r.volatiles):5.2f} %,"
-                  f" at 120 s {100 * r.volatiles[-1]:5.2f} %")
+            print(
+                f"case {c:2d}: volatiles at 30 s {100 * np.interp(30, r.t, r.volatiles):5.2f} %,"
+                f" at 120 s {100 * r.volatiles[-1]:5.2f} %"
+            )
         ax.set_title(g)
         ax.legend(fontsize="x-small")
         ax.set_ylabel("volatiles [% of shale]")
@@ -85,12 +97,18 @@ def main():
     for _, s in speed.iterrows():
         row = mix.loc[s.exp]
         g = build_grid(0.285, row.speed_rpm * RPM, row.fill_percent / 100)
-        res = simulate_grid(g, [row.dp_mm * 1e-3], (GridMaterial("b", row.ratio_used, [1.0]),
-                                                    GridMaterial("o", 1.0, [1.0])), duration=120.0)
+        res = simulate_grid(
+            g,
+            [row.dp_mm * 1e-3],
+            (GridMaterial("b", row.ratio_used, [1.0]), GridMaterial("o", 1.0, [1.0])),
+            duration=120.0,
+        )
         t_exp = row.lf_exp_mm / row.alpha_exp_mm_s
         rows.append((s.v_al_mm_s, t_exp, s.tm_sim_s, res.mixing_time, res.final_contact))
-        print(f"exp {s.exp:>2}: V_AL {s.v_al_mm_s:5.0f} mm/s, t_m exp {t_exp:5.1f} s, thesis sim "
-              f"{s.tm_sim_s:3.0f} s, ours {res.mixing_time:5.1f} s; l_f ours {res.final_contact:5.1f} m")
+        print(
+            f"exp {s.exp:>2}: V_AL {s.v_al_mm_s:5.0f} mm/s, t_m exp {t_exp:5.1f} s, thesis sim "
+            f"{s.tm_sim_s:3.0f} s, ours {res.mixing_time:5.1f} s; l_f ours {res.final_contact:5.1f} m"
+        )
     rows = np.array(rows)
     fig, ax = plt.subplots(figsize=(5.5, 3.5))
     ax.plot(rows[:, 0], 100 * (rows[:, 2] / rows[:, 1] - 1), "s", label="thesis simulation")
