@@ -37,7 +37,7 @@ def test_network_closes_fluxes_and_areas():
 
 
 def test_coarse_grid_is_rejected():
-    with pytest.raises(InputError, match="too coarse"):
+    with pytest.raises(InputError, match="too coarse"), pytest.warns(OutOfRangeWarning):
         build_grid(0.285, 2 * RPM, 0.4, layers=5)  # X_AL = 0.079 needs >= 6 layers
     with pytest.raises(InputError, match="grid.zones"):
         build_grid(0.285, 9 * RPM, 0.25, zones=2)
@@ -134,8 +134,10 @@ def test_tilted_distribution_bad_mean():
 
 
 def test_speed_outside_rolling_regime_warns():
-    with pytest.warns(OutOfRangeWarning, match="cataracting"):
+    with pytest.warns(OutOfRangeWarning, match="cascading regime, outside the rolling"):
         run_retort(retort_case(2, omega=10 * RPM, duration=2.0, snapshot_times=()))
+    with pytest.warns(OutOfRangeWarning, match="slumping regime"):
+        build_grid(3.0, 1.5 * RPM, 0.3, layers=8)
 
 
 def test_size_beyond_limit_warns():
@@ -223,3 +225,20 @@ def test_all_builtin_cases_load():
             ref = retort_case(c)
             assert spec.shale_to_ash == ref.shale_to_ash
             assert spec.omega == pytest.approx(ref.omega)
+
+
+def test_animation_and_result_plots(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from rotarykiln.transverse.grid_plot import animate_grid, plot_layer_sizes
+    from rotarykiln.transverse.mixing import vanpuyvelde_mixing
+    from rotarykiln.transverse.segregation import vanpuyvelde_layer_mean_sizes
+
+    r = run_retort(retort_case(2, duration=3.0, snapshot_times=(0.0, 1.0, 2.0, 3.0)))
+    assert animate_grid(r, tmp_path / "a.gif", "temperature")
+    assert (tmp_path / "a.gif").stat().st_size > 0
+    assert plot_layer_sizes(r) is not None
+    assert r.plot() is not None and len(r.to_frame()) == len(r.t)
+    assert vanpuyvelde_mixing(0.285, 9 * RPM, 0.25, 2.51e-3, 1.06).plot() is not None
+    assert vanpuyvelde_layer_mean_sizes([1e-3, 2e-3], [0.5, 0.5], 0.4).plot() is not None

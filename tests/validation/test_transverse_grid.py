@@ -9,6 +9,10 @@ from rotarykiln.transverse.grid_geometry import build_grid
 
 RPM = 2 * np.pi / 60
 
+# Some experiments ran below 0.10 of the critical speed (slumping by Henein's bands) although the
+# thesis observed rolling beds; the regime warning is expected there.
+pytestmark = pytest.mark.filterwarnings("ignore::rotarykiln.errors.OutOfRangeWarning")
+
 
 def _run_mixing(exp: str, duration: float = 120.0):
     row = load_table("mixing_experiments").set_index("exp").loc[exp]

@@ -34,6 +34,7 @@ __all__ = [
     "stagnant_layer_velocity",
     "stagnant_residence_time",
     "bed_revolution_period",
+    "warn_if_not_rolling",
 ]
 
 _RPM = 60.0 / (2.0 * np.pi)  # rpm per rad/s
@@ -329,6 +330,36 @@ def vanpuyvelde_centre_of_rotation(apex_a, apex_b, r_a, theta_a):
     th_ab = np.arctan2(yb - ya, xb - xa)
     ang = th_ab - theta_a
     return float(xa + r_a * np.cos(ang)), float(ya + r_a * np.sin(ang))
+
+
+def warn_if_not_rolling(omega, radius, fill) -> bool:
+    """Warn (OutOfRangeWarning) when the drum is not in the rolling regime.
+
+    Uses the Henein (1983) bands of :func:`rotarykiln.regimes.classify_regime` (rolling between
+    0.10 and 0.55 of the critical speed), the regime for which every transverse model of
+    Van Puyvelde (1999) was developed. Returns True when a warning was issued.
+
+    Examples
+    --------
+    >>> warn_if_not_rolling(5 / 60 * 2 * np.pi, 3.0, 0.3)
+    False
+    """
+    import warnings
+
+    from rotarykiln.errors import OutOfRangeWarning
+    from rotarykiln.regimes import classify_regime, froude_number
+
+    res = classify_regime(froude_number(omega, radius), fill, criterion="henein")
+    if res.name == "rolling":
+        return False
+    warnings.warn(
+        f"drum speed is {float(np.sqrt(res.froude)):.3f} of the critical speed: {res.name} "
+        "regime, outside the rolling regime (0.10-0.55 of critical, Henein 1983) for which the "
+        "transverse mixing and segregation models were developed",
+        OutOfRangeWarning,
+        stacklevel=3,
+    )
+    return True
 
 
 @dataclass(frozen=True)

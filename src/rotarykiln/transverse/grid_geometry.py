@@ -32,6 +32,7 @@ from rotarykiln.geometry import half_angle_from_fill
 from rotarykiln.transverse.active_layer import (
     vanpuyvelde_active_layer_proportion,
     vanpuyvelde_active_layer_velocity,
+    warn_if_not_rolling,
 )
 
 __all__ = ["GridGeometry", "build_grid", "default_level_pattern"]
@@ -179,6 +180,7 @@ def build_grid(
         raise InputError("grid.layers", layers, ">= 2 (too coarse to resolve the active layer)")
     if int(zones) != zones or zones < 4:
         raise InputError("grid.zones", zones, ">= 4 (too coarse to resolve the bed circulation)")
+    warn_if_not_rolling(omega, radius, fill)
     x_al = float(vanpuyvelde_active_layer_proportion(omega, fill))
     need = int(np.ceil((1 - x_al) / (2 * x_al) - 1e-9))
     if layers < need:

@@ -388,8 +388,9 @@ def vanpuyvelde_mixing(
     (2.09, 42.7, 20.5)
     """
     from rotarykiln.errors import warn_out_of_range
-    from rotarykiln.transverse.active_layer import active_layer
+    from rotarykiln.transverse.active_layer import active_layer, warn_if_not_rolling
 
+    warn_if_not_rolling(omega, radius, fill)
     al = active_layer(radius, omega, fill)
     warn_out_of_range("drum speed [rpm]", omega * 60 / (2 * np.pi), 5.0, 19.0, "Van Puyvelde ch 6")
     warn_out_of_range("fill", fill, 0.06, 0.40, "Van Puyvelde ch 6")

@@ -166,7 +166,6 @@ def run_retort(spec: RetortSpec) -> GridResult:
     check_positive("drum_diameter", spec.drum_diameter, "m")
     check_positive("omega", spec.omega, "rad/s")
     radius = 0.5 * spec.drum_diameter
-    _check_rolling(spec.omega, radius)
     d_lim = 6.62e-3
     for what, size in (("shale_size", spec.shale_size), ("ash_size", spec.ash_size)):
         check_positive(what, size, "m")
@@ -215,28 +214,3 @@ def run_retort(spec: RetortSpec) -> GridResult:
         heating=HeatingOptions(emissivity=spec.emissivity, balance=spec.balance),
         snapshot_times=spec.snapshot_times,
     )
-
-
-def _check_rolling(omega: float, radius: float) -> None:
-    """Warn when the speed is outside the rolling band 0.10-0.55 of critical (Henein 1983)."""
-    import warnings
-
-    from rotarykiln.errors import OutOfRangeWarning
-
-    frac = omega / np.sqrt(9.80665 / radius)
-    bands = [
-        (0.0, "slipping/slumping"),
-        (0.10, "rolling"),
-        (0.55, "cataracting"),
-        (0.60, "cataracting/centrifuging"),
-        (1.0, "centrifuging"),
-    ]
-    regime = [name for lo, name in bands if frac >= lo][-1]
-    if regime != "rolling":
-        warnings.warn(
-            f"drum speed is {frac:.3f} of the critical speed: {regime} regime, outside the "
-            "rolling regime (0.10-0.55 of critical, Henein 1983) for which the transverse "
-            "models were developed",
-            OutOfRangeWarning,
-            stacklevel=3,
-        )
