@@ -38,6 +38,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
 from pydantic_core import PydanticCustomError
 
 from rotarykiln.errors import InputError
+from rotarykiln.transverse.config import TransverseSection
 from rotarykiln.units import to_si
 
 __all__ = [
@@ -385,6 +386,7 @@ class Case(Section):
     transport: Transport | None = None
     heat: Heat | None = None
     chemistry: Chemistry | None = None
+    transverse: TransverseSection | None = None
 
 
 def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:
