@@ -142,7 +142,9 @@ def open_open_exit_age(t, tau, peclet):
     theta = t / tau
     pos = theta > 0
     th = np.where(pos, theta, 1.0)
-    e = 0.5 * np.sqrt(pe / (np.pi * th)) * np.exp(-pe * (1.0 - th) ** 2 / (4.0 * th))
+    with np.errstate(over="ignore"):  # exp(-inf) = 0 at theta -> 0
+        log_e = 0.5 * np.log(pe / (4.0 * np.pi * th)) - pe * (1.0 - th) ** 2 / (4.0 * th)
+        e = np.exp(log_e)
     return np.where(pos, e, 0.0) / tau
 
 

@@ -301,7 +301,7 @@ class FitResult:
             )
         ax.set_xlabel("t [min]" if minutes else "t [s]")
         ax.set_ylabel("E(t) [1/min]" if minutes else "E(t) [1/s]")
-        ax.legend()
+        ax.legend(fontsize="small", loc="upper right")
         return ax
 
 
@@ -338,7 +338,8 @@ def fit_rtd(
     t : array_like
         Times [s], strictly increasing.
     e : array_like
-        Measured E(t) [1/s] (or any signal proportional to it: it is normalised here).
+        Measured E(t) [1/s], normalised over the whole curve (e.g. ``TracerResult.exit_age``);
+        not renormalised here, so that a curve sampled over part of its range keeps its scale.
     model : str
         Model name (see :data:`rotarykiln.rtd.dispersion.MODELS`), not plug flow.
     guess : (tau, shape), optional
@@ -382,8 +383,6 @@ def fit_rtd(
     if spec.shape is None:
         raise InputError("model", model, "a model with a shape parameter (not plug flow)")
     data_mean, data_var = _data_moments(t, e)
-    area = float(np.trapezoid(e, t))
-    e = e / area  # normalise: E must integrate to 1
     moments = moment_method(data_mean, data_var, model=model, convention="paper", length=length)
     if guess is None:
         start = moment_method(data_mean, data_var, model=model, convention="rigorous")

@@ -165,13 +165,14 @@ def _check_samples(t, c) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _tail_fraction(t, c, area, tolerance) -> float | None:
-    """Fraction of tracer after the last sample, by extrapolating an exponential tail."""
+    """Fraction of tracer after the last sample, by extrapolating the exponential decay of the
+    last three samples (an overestimate for bell-shaped tails, which decay faster)."""
     peak = c.max()
     if c[-1] <= tolerance * peak:
         return 0.0
     i_peak = int(np.argmax(c))
     post = np.arange(i_peak, t.size)
-    tail = post[-max(3, post.size // 5) :]
+    tail = post[-3:]
     tail = tail[c[tail] > 0]
     if tail.size >= 3:
         slope = np.polyfit(t[tail], np.log(c[tail]), 1)[0]
@@ -204,8 +205,8 @@ def analyse_tracer(
     kind : {"concentration", "mass_fraction", "conductivity", "tracer_mass"}
         What ``signal`` is.
     baseline : float, "auto" or None
-        Background signal subtracted before analysis ("auto": median of the first three samples);
-        small negative values left by the subtraction are set to 0.
+        Background signal (unit of ``signal``) subtracted first ("auto": median of the first
+        three samples); small negative values left by the subtraction are set to 0.
     calibration : (slope, intercept), optional
         Linear map of a conductivity to a concentration, c = slope * signal + intercept.
     weights : {"trapezoid", "rectangle"}
@@ -238,15 +239,17 @@ def analyse_tracer(
     if kind not in SIGNALS:
         raise InputError("kind", kind, "one of " + ", ".join(SIGNALS))
     t, c = _check_samples(t, signal)
-    if calibration is not None:
-        slope, intercept = calibration
-        c = slope * c + intercept
     if isinstance(baseline, str):
         if baseline != "auto":
             raise InputError("baseline", baseline, 'a number, "auto" or None')
         baseline = float(np.median(c[:3]))
     if baseline is not None:
         c = np.clip(c - float(baseline), 0.0, None)
+    if calibration is not None:
+        slope, intercept = calibration
+        c = slope * c + intercept
+        if np.any(c < 0):
+            raise InputError("calibration", calibration, "giving concentrations >= 0")
     if kind == "tracer_mass":
         recovered = float(c.sum())
         c = c / _weights(t, "rectangle")  # mass per window -> mass rate
