@@ -391,7 +391,10 @@ def fit_rtd(
     scale = float(e.max())
 
     def residual(x):
-        return (spec.exit_age(t, np.exp(x[0]), np.exp(x[1])) - e) / scale
+        # far from the data the trial parameters may overflow: a large residual steers back
+        with np.errstate(all="ignore"):
+            r = (spec.exit_age(t, np.exp(x[0]), np.exp(x[1])) - e) / scale
+        return np.where(np.isfinite(r), r, 1e6)
 
     x0 = np.log(np.asarray(guess, dtype=float))
     try:

@@ -9,7 +9,9 @@ from rotarykiln.errors import InputError
 __all__ = ["parity_plot"]
 
 
-def parity_plot(measured, predicted, ax=None, *, band=0.2, label=None, quantity="", log=False):
+def parity_plot(
+    measured, predicted, ax=None, *, band=0.2, label=None, quantity="", log=False, limits=None
+):
     """Predicted against measured values with the y = x line and +/- ``band`` lines.
 
     Parameters
@@ -25,6 +27,8 @@ def parity_plot(measured, predicted, ax=None, *, band=0.2, label=None, quantity=
         Axis label text, e.g. "D [m2/s]".
     log : bool
         Logarithmic axes.
+    limits : (low, high), optional
+        Axis range (default: from the data).
 
     Returns
     -------
@@ -40,7 +44,12 @@ def parity_plot(measured, predicted, ax=None, *, band=0.2, label=None, quantity=
         _, ax = plt.subplots(figsize=(4.5, 4.5))
     ax.plot(x, y, "o", label=label)
     both = np.concatenate([x, y])
-    lo, hi = (both[both > 0].min() / 1.5, both.max() * 1.5) if log else (0.0, both.max() * 1.1)
+    if limits is not None:
+        lo, hi = limits
+    elif log:
+        lo, hi = both[both > 0].min() / 1.5, both.max() * 1.5
+    else:
+        lo, hi = 0.0, both.max() * 1.1
     line = np.linspace(lo, hi, 50) if not log else np.geomspace(lo, hi, 50)
     ax.plot(line, line, "k-", lw=0.8)
     for f in (1 - band, 1 + band):
