@@ -8,7 +8,9 @@ from rotarykiln.rtd.fitting import fit_rtd
 
 TAU, PE = 2520.0, 550.0
 T200 = np.linspace(30.0, 62.0, 200) * 60.0
-E200 = open_open_exit_age(T200, TAU, PE) * (1 + 0.02 * np.random.default_rng(3).standard_normal(200))
+E200 = open_open_exit_age(T200, TAU, PE) * (
+    1 + 0.02 * np.random.default_rng(3).standard_normal(200)
+)
 T1E4 = np.linspace(1.0, 2 * TAU, 10_000)
 
 

@@ -43,6 +43,12 @@ from rotarykiln.units import to_si
 __all__ = [
     "Angle",
     "Bed",
+    "Burner",
+    "Heat",
+    "HeatClosures",
+    "HeatGas",
+    "HeatMeasurements",
+    "LiningLayer",
     "Case",
     "Density",
     "Fraction",
@@ -62,6 +68,8 @@ __all__ = [
     "Temperature",
     "ThermalConductivity",
     "Time",
+    "Transport",
+    "TransportWeir",
     "Velocity",
     "VolumetricFlow",
     "load_case",
@@ -128,6 +136,7 @@ def quantity(
 
 
 Length = quantity("length", gt=0)
+Position = quantity("length", ge=0)
 Angle = quantity("angle", ge=-math.pi / 2, le=math.pi / 2, shown="in [-90, 90] deg")
 RotationRate = quantity("rotation rate", gt=0)
 MassFlow = quantity("mass flow", ge=0)
@@ -186,6 +195,106 @@ class Bed(Section):
     fill: FillFraction
 
 
+class LiningLayer(Section):
+    """One lining layer of the ``heat`` section: a library material and a thickness."""
+
+    material: str
+    thickness: Length
+    absent: list[tuple[Position, Position]] = []
+
+
+class Burner(Section):
+    """Fuel and air burnt completely; the heat is released along a flame inside the kiln."""
+
+    fuel: str = "CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"
+    fuel_flow: MassFlow
+    air_flow: MassFlow
+    temperature: Temperature = 298.15
+    flame_start: Position = 0.0
+    flame_length: Length = 1.0
+
+
+class HeatGas(Section):
+    """Inlet gas of the ``heat`` section: flow, temperature and composition (mole fractions)."""
+
+    flow: MassFlow | None = None
+    inlet_temperature: Temperature | None = None
+    composition: str = "O2:0.2095, N2:0.7808, AR:0.0097"
+
+
+class HeatClosures(Section):
+    """Closure names of the heat model (see docs/heat.md)."""
+
+    gas_wall: str = "tscheng1979"
+    gas_bed: str = "tscheng1979"
+    covered_wall: str = "li2005"
+    radiation: bool = True
+    gas_emissivity: str | float = "johansson2011"
+    bed_conductivity: str = "given"
+
+
+class HeatMeasurements(Section):
+    """Measured profiles to overlay on the figure and score the solution against."""
+
+    z_gas: list[Position] = []
+    t_gas: list[Temperature] = []
+    z_bed: list[Position] = []
+    t_bed: list[Temperature] = []
+    z_wall: list[Position] = []
+    t_wall: list[Temperature] = []
+    wall_interface: int = 0
+
+
+class Heat(Section):
+    """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md."""
+
+    solid: str = "sand"
+    solid_inlet_temperature: Temperature = 298.15
+    fill: FillFraction | list[FillFraction] | None = None
+    counter_current: bool = True
+    gas: HeatGas = HeatGas()
+    burner: Burner | None = None
+    lining: list[LiningLayer]
+    ambient_temperature: Temperature = 298.15
+    wind_speed: Velocity = 0.0
+    wall_emissivity: Fraction | None = None
+    shell_emissivity: Fraction | None = None
+    cells: int = 100
+    closures: HeatClosures = HeatClosures()
+    measurements: HeatMeasurements | None = None
+
+
+class TransportWeir(Section):
+    """An internal weir: distance from the discharge end and height above the wall."""
+
+    position: Length
+    height: Length
+
+
+class Transport(Section):
+    """Axial solids transport (rotarykiln.transport): model choice, friction law, dams, weirs.
+
+    ``model``: ``kramers`` (Kramers-Croockewit/Saeman ODE) or ``scott`` (Scott 1986);
+    ``friction`` (Scott): ``zero``, ``dynamic``, ``static`` or a number; ``dam_height``:
+    discharge dam above the wall (open end if absent); ``weirs`` (Scott only).
+    """
+
+    model: Literal["kramers", "scott"] = "kramers"
+    friction: (
+        Literal["zero", "dynamic", "static"]
+        | Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))]
+    ) = "static"
+    dam_height: Length | None = None
+    weirs: list[TransportWeir] = []
+    n_points: int = 201
+
+
+def _nonnegative_number(v: Any) -> float:
+    if isinstance(v, bool) or not isinstance(v, int | float) or not v >= 0:
+        raise PydanticCustomError("number", "{value} is not a number >= 0", {"value": v})
+    return float(v)
+
+
 class RTDLifters(Section):
     """Lifters for the RTD correlations: type, number around the circumference, dimensions."""
 
@@ -224,6 +333,8 @@ class Case(Section):
     operation: Operation
     material: Material = Material()
     bed: Bed | None = None
+    transport: Transport | None = None
+    heat: Heat | None = None
     rtd: RTD | None = None
 
 
@@ -295,7 +406,7 @@ def load_case(path: str | Path) -> Case:
     Examples
     --------
     >>> from rotarykiln.cases import builtin_case_path
-    >>> case = load_case(builtin_case_path("demo"))
+    >>> case = load_case(builtin_case_path("heat/tscheng_A16"))
     >>> round(case.operation.speed, 4)
     0.1571
     """

@@ -124,3 +124,15 @@ def test_cli_predict(tmp_path, capsys):
     assert main(["rtd", "predict", str(case)]) == 2
     assert "rtd.mean_residence_time" in capsys.readouterr().err
     assert not math.isnan(result["rtd_peclet"])
+
+
+def test_rotarykiln_run_writes_the_rtd_prediction(tmp_path, capsys):
+    import yaml
+
+    case = tmp_path / "kiln.yaml"
+    case.write_text(yaml.safe_dump(CASE))
+    out = tmp_path / "run"
+    assert main(["run", str(case), "--out", str(out), "--json", "--no-plots"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["rtd_peclet_source"] == "bongo_njeng2015"
+    assert (out / "rtd_prediction.csv").is_file()

@@ -15,7 +15,11 @@ from rotarykiln.commands._args import out_dir, print_json
 from rotarykiln.outputs import save_figure_atomic, write_json_atomic, write_text_atomic
 from rotarykiln.report import case_summary, format_table
 
-RUNNERS: dict[str, str] = {}
+RUNNERS: dict[str, str] = {
+    "transport": "rotarykiln.commands.bed:run_case_section",
+    "heat": "rotarykiln.kiln.run:heat_runner",
+    "rtd": "rotarykiln.rtd.predict:run_section",
+}
 """Section name -> "module:function(case, out_dir) -> dict" run when the case has that section."""
 
 

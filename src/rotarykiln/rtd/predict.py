@@ -251,13 +251,16 @@ def predict_from_case(case, *, transport: Callable | None = None) -> RTDPredicti
     return predict_rtd(mrt, peclet=pe, length=case.kiln.length, model=sec.model, source=source)
 
 
-def run_section(case, out) -> dict:
-    """Runner for ``rotarykiln run``: write rtd_prediction.csv/.png in ``out``, return a summary."""
+def run_section(case, out, *, transport: Callable | None = None) -> dict:
+    """Runner for ``rotarykiln run``: write rtd_prediction.csv/.png in ``out``, return a summary.
+
+    ``transport`` is passed on to :func:`predict_from_case` (the kiln layer may supply it).
+    """
     import matplotlib.pyplot as plt
 
     from rotarykiln.outputs import save_figure_atomic, write_frame_atomic
 
-    pred = predict_from_case(case)
+    pred = predict_from_case(case, transport=transport)
     fig, ax = plt.subplots(figsize=(6, 4))
     pred.plot(ax)
     write_frame_atomic(out / "rtd_prediction.csv", pred.to_frame())

@@ -1,0 +1,113 @@
+"""Figures and the per-run table of docs/heat.md and docs/validation_heat.md.
+
+Run from the repository root:  PYTHONPATH=src python docs/scripts/heat_figures.py
+Writes docs/figures/heat_*.png and prints the markdown table of the 44 Tscheng runs.
+"""
+
+import warnings
+from dataclasses import replace
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from rotarykiln.case import load_case  # noqa: E402
+from rotarykiln.cases import builtin_case_path  # noqa: E402
+from rotarykiln.kiln import solve_heat  # noqa: E402
+from rotarykiln.kiln.run import heat_kiln_from_case  # noqa: E402
+from rotarykiln.kiln.tscheng import (  # noqa: E402
+    Z_GAS_BED,
+    load_tscheng_runs,
+    score_run,
+    tscheng_kiln,
+)
+
+OUT = Path("docs/figures")
+warnings.simplefilter("ignore")
+
+
+def main():
+    OUT.mkdir(parents=True, exist_ok=True)
+    # 1. one run with its measurements
+    sol = solve_heat(tscheng_kiln("A16"))
+    ax = sol.plot()
+    ax.axvspan(1.25, 1.78, color="0.9", zorder=0)
+    ax.figure.savefig(OUT / "heat_tscheng_A16.png", dpi=90, bbox_inches="tight")
+    plt.close(ax.figure)
+
+    # 2. parity of all 44 runs, and the per-run table
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.2))
+    rows = []
+    win = (Z_GAS_BED >= 1.25) & (Z_GAS_BED <= 1.78)
+    for run in load_tscheng_runs().index:
+        s = solve_heat(tscheng_kiln(run))
+        m = s.measurements
+        sc = score_run(run, s)
+        rows.append(sc)
+        for ax, key, fn in (
+            (axes[0], "bed", s.bed_temperature_at),
+            (axes[1], "gas", s.gas_temperature_at),
+        ):
+            pred = fn(Z_GAS_BED)
+            ax.plot(m[f"t_{key}"][~win], pred[~win], "o", mfc="none", color="0.6", ms=4)
+            ax.plot(m[f"t_{key}"][win], pred[win], "o", color="tab:red", ms=4)
+    for ax, key in zip(axes, ("bed", "gas"), strict=True):
+        lo, hi = ax.get_xlim()
+        ax.plot([lo, hi], [lo, hi], "k-", lw=0.8)
+        ax.set_xlabel(f"measured {key} temperature (K)")
+        ax.set_ylabel(f"predicted {key} temperature (K)")
+        ax.set_title(f"{key}: red = 1.25-1.78 m window, grey = other points")
+    fig.tight_layout()
+    fig.savefig(OUT / "heat_tscheng_parity.png", dpi=80)
+    plt.close(fig)
+
+    # 3. flame case, radiation on and off
+    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("heat/ubc_pilot_flame")))
+    on = solve_heat(kiln, cells)
+    off = solve_heat(replace(kiln, closures=replace(kiln.closures, radiation=False)), cells)
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for sol_, ls, lab in ((on, "-", "radiation on"), (off, "--", "radiation off")):
+        ax.plot(sol_.z_nodes, sol_.t_gas_nodes, ls, color="tab:red", label=f"gas, {lab}")
+        ax.plot(sol_.z_nodes, sol_.t_bed_nodes, ls, color="tab:brown", label=f"bed, {lab}")
+        ax.plot(sol_.z, sol_.t_wall, ls, color="tab:gray", label=f"wall, {lab}")
+    ax.set_xlabel("z from solids inlet (m)")
+    ax.set_ylabel("temperature (K)")
+    ax.set_title("UBC-geometry pilot kiln, natural gas burner at z = 5.5 m")
+    ax.legend(fontsize=7, ncol=2)
+    fig.savefig(OUT / "heat_flame_radiation.png", dpi=90, bbox_inches="tight")
+    plt.close(fig)
+
+    print("| run | bed window | gas window | bed all | gas all | wall all |")
+    print("|---|---|---|---|---|---|")
+    for r in rows:
+        print(
+            f"| {r.run} | {r.bed_window:.1f} | {r.gas_window:.1f} | {r.bed_all:.1f} | "
+            f"{r.gas_all:.1f} | {r.wall_all:.1f} |"
+        )
+    mean = {
+        k: np.mean([getattr(r, k) for r in rows])
+        for k in ("bed_window", "gas_window", "bed_all", "gas_all", "wall_all")
+    }
+    print(
+        f"| **mean** | **{mean['bed_window']:.2f}** | **{mean['gas_window']:.2f}** | "
+        f"**{mean['bed_all']:.2f}** | **{mean['gas_all']:.2f}** | **{mean['wall_all']:.2f}** |"
+    )
+    dz = on.z[1] - on.z[0]
+    for name, s_ in (("on", on), ("off", off)):
+        print(
+            name,
+            {k: round(v, 4) if isinstance(v, float) else v for k, v in s_.summary().items()},
+            "rad to bed W",
+            round(float(np.sum(s_.fluxes["q_rad_to_bed"]) * dz)),
+            "conv to bed W",
+            round(float(np.sum(s_.fluxes["q_gas_bed_conv"]) * dz)),
+            "cw to bed W",
+            round(float(np.sum(s_.fluxes["q_covered_wall_bed"]) * dz)),
+        )
+
+
+if __name__ == "__main__":
+    main()

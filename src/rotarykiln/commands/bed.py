@@ -1,0 +1,150 @@
+"""``rotarykiln bed``: axial bed-depth profile, hold-up and residence time of a drum.
+
+Example::
+
+    rotarykiln bed --diameter 0.4 m --length 2 m --speed 3 rpm --slope 1 deg --feed 62 kg/h \\
+        --density 1500 kg/m3 --repose 35 deg --dam 0.05 m --model kramers --out results
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print_json
+from rotarykiln.errors import InputError
+from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
+from rotarykiln.report import format_table
+from rotarykiln.transport.solve import solve_bed
+from rotarykiln.units import to_si
+
+__all__ = ["register", "run", "run_case_section"]
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "bed",
+        help="axial bed-depth profile, hold-up and residence time (Kramers or Scott)",
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_quantity(p, "diameter", "drum inner diameter, e.g. 0.4 m")
+    add_quantity(p, "length", "drum length, e.g. 2 m")
+    add_quantity(p, "speed", "rotation speed, e.g. 3 rpm")
+    add_quantity(p, "slope", "drum slope, e.g. 1 deg or 2 %")
+    add_quantity(p, "feed", "solids mass feed, e.g. 62 kg/h")
+    add_quantity(p, "density", "bulk density, e.g. 1500 kg/m3")
+    add_quantity(p, "repose", "dynamic angle of repose, e.g. 35 deg")
+    add_quantity(p, "static-repose", "static angle of repose (Scott; default: --repose)")
+    add_quantity(p, "dam", "discharge dam height above the wall, e.g. 0.05 m (default: open)")
+    p.add_argument(
+        "--weir",
+        nargs=2,
+        action="append",
+        metavar=("POSITION", "HEIGHT"),
+        help='internal weir (Scott): distance from the discharge and height, e.g. "0.25m" "0.02m"'
+        "; repeatable",
+    )
+    p.add_argument("--model", choices=("kramers", "scott"), default="kramers")
+    p.add_argument(
+        "--friction",
+        default="static",
+        help="Scott's surface friction: zero, dynamic, static (default) or a number",
+    )
+    p.add_argument("--points", type=int, default=201, help="output points along the drum")
+    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    p.add_argument("--out", help="write profile.csv, summary.json and profile.png to this folder")
+    p.set_defaults(func=run)
+
+
+def _friction(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return text
+
+
+def _write(profile, out) -> dict:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    write_frame_atomic(out / "profile.csv", profile.to_frame(), index=False)
+    write_json_atomic(out / "summary.json", profile.summary())
+    ax = profile.plot()
+    save_figure_atomic(out / "profile.png", ax.figure, dpi=110, bbox_inches="tight")
+    plt.close(ax.figure)
+    return {"profile_csv": str(out / "profile.csv"), "profile_png": str(out / "profile.png")}
+
+
+def run(args: argparse.Namespace) -> int:
+    q = {
+        name: get_quantity(args, name, kind, required=True)
+        for name, kind in (
+            ("diameter", "length"),
+            ("length", "length"),
+            ("speed", "rotation rate"),
+            ("slope", "angle"),
+            ("feed", "mass flow"),
+            ("density", "density"),
+            ("repose", "angle"),
+        )
+    }
+    weirs = [
+        (to_si("--weir", pos, "length"), to_si("--weir", h, "length")) for pos, h in args.weir or []
+    ]
+    profile = solve_bed(
+        model=args.model,
+        static_repose=get_quantity(args, "static-repose", "angle"),
+        dam=get_quantity(args, "dam", "length"),
+        weirs=weirs,
+        friction=_friction(args.friction),
+        n_points=args.points,
+        **q,
+    )
+    summary = {k: v for k, v in profile.summary().items() if k != "section_fills"}
+    summary["mean_residence_time_min"] = profile.mean_residence_time / 60.0
+    if args.out:
+        summary.update(_write(profile, out_dir(args.out, "bed-results")))
+    if args.json:
+        print_json(dict(summary, section_fills=profile.summary()["section_fills"]))
+    else:
+        print(format_table(summary))
+    return 0
+
+
+def run_case_section(case, out) -> dict:
+    """Runner for the ``transport:`` section of a case file (see rotarykiln.commands.run)."""
+    t = case.transport
+    mat, op, kiln = case.material, case.operation, case.kiln
+    for field, value in (
+        ("operation.feed", op.feed),
+        ("material.bulk_density", mat.bulk_density),
+        ("material.repose_angle", mat.repose_angle),
+    ):
+        if value is None:
+            raise InputError(field, None, "given for the transport section")
+    profile = solve_bed(
+        model=t.model,
+        diameter=kiln.diameter,
+        length=kiln.length,
+        speed=op.speed,
+        slope=kiln.slope,
+        feed=op.feed,
+        density=mat.bulk_density,
+        repose=mat.repose_angle,
+        static_repose=mat.static_repose_angle,
+        dam=t.dam_height,
+        weirs=[(w.position, w.height) for w in t.weirs],
+        friction=t.friction,
+        n_points=t.n_points,
+    )
+    files = _write(profile, out)
+    return {
+        "transport_model": profile.model,
+        "transport_mean_fill": profile.mean_fill,
+        "transport_holdup_kg": profile.holdup_mass,
+        "transport_mean_residence_time_min": profile.mean_residence_time / 60.0,
+        "transport_discharge_fill": profile.discharge_fill,
+        **{f"transport_{k}": v for k, v in files.items()},
+    }

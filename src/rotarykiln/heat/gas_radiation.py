@@ -1,0 +1,194 @@
+r"""Emissivity of CO2/H2O gas mixtures (weighted sum of grey gases) and the freeboard beam length.
+
+.. math:: \varepsilon_g = \sum_i a_i(T)\,[1 - \exp(-\kappa_i\,p\,L)]
+
+- :func:`smith_wsgg_emissivity`: Smith, Shen & Friedman (1982), 3 grey gases, fixed ratios.
+- :func:`johansson_wsgg_emissivity`: Johansson et al. (2011), 4 grey gases, any
+  :math:`MR = p_w/p_c` in 0.125-2.
+- :func:`gorog_mean_beam_length`: :math:`L_e = 0.95 D (1 - h/D)`.
+
+Partial pressures in Pa (converted to atm inside: the models are fitted in atm m).
+Coefficients: shared/reference/closures.md 3a, 3c, 3d.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
+from rotarykiln.heat._util import span
+
+__all__ = ["smith_wsgg_emissivity", "johansson_wsgg_emissivity", "gorog_mean_beam_length"]
+
+ATM = 101325.0
+
+# kappa [1/(atm m)], b1..b4 for a_i = b1e-1 + b2e-4 T + b3e-7 T^2 + b4e-11 T^3
+_SMITH = {
+    "pw/pc=1": (
+        (0.4303, 5.150, -2.303, 0.9779, -1.494),
+        (7.055, 0.7749, 3.399, -2.297, 3.770),
+        (178.1, 1.907, -1.824, 0.5608, -0.5122),
+    ),
+    "pw/pc=2": (
+        (0.4201, 6.508, -5.551, 3.029, -5.353),
+        (6.516, -0.2504, 6.112, -3.882, 6.528),
+        (131.9, 2.718, -3.118, 1.221, -1.612),
+    ),
+    "co2": (
+        (0.3966, 0.4334, 2.620, -1.560, 2.565),
+        (15.64, -0.4814, 2.822, -1.794, 3.274),
+        (394.3, 0.5492, 0.1087, -0.3500, 0.9123),
+    ),
+    "h2o": (
+        (0.4098, 5.977, -5.119, 3.042, -5.564),
+        (6.325, 0.5677, 3.333, -1.967, 2.718),
+        (120.5, 1.800, -2.334, 1.008, -1.454),
+    ),
+    "h2o, pw=1atm": (
+        (0.4496, 6.324, -8.358, 6.135, -13.03),
+        (7.113, -0.2016, 7.145, -5.212, 9.868),
+        (119.7, 3.500, -5.040, 2.425, -3.888),
+    ),
+}
+
+_JOHANSSON_K = ((0.055, 0.012), (0.880, -0.021), (10.0, -1.6), (135.0, -35.0))
+_JOHANSSON_C = (
+    ((0.358, 0.0731, -0.0466), (-0.165, -0.0554, 0.0930), (0.0598, 0.0028, -0.0256)),
+    ((0.392, -0.212, 0.0191), (-0.291, 0.644, -0.209), (0.0784, -0.197, 0.0662)),
+    ((0.142, -0.0831, 0.0148), (0.348, -0.294, 0.0662), (-0.122, 0.118, -0.0295)),
+    ((0.0798, -0.0370, 0.0023), (0.0866, -0.106, 0.0305), (-0.0127, 0.0169, -0.0051)),
+)
+
+
+def smith_wsgg_emissivity(temperature, pressure_path_length, case="pw/pc=2", *, check=True):
+    r"""Total emissivity of CO2/H2O by the WSGG model of Smith, Shen & Friedman (1982).
+
+    .. math:: \varepsilon_g = \sum_{i=1}^{3} a_i(T)[1 - e^{-\kappa_i pL}], \quad
+              a_i = b_{i1}10^{-1} + b_{i2}10^{-4}T + b_{i3}10^{-7}T^2 + b_{i4}10^{-11}T^3
+
+    Parameters
+    ----------
+    temperature : float or array, K
+    pressure_path_length : float or array, Pa m
+        :math:`(p_w + p_c)L` for mixtures, or the partial pressure of the single species
+        times the path length.
+    case : str
+        ``"pw/pc=1"``, ``"pw/pc=2"`` (natural gas products), ``"co2"``, ``"h2o"``,
+        ``"h2o, pw=1atm"``.
+    check : bool
+        Warn outside 600-2400 K and 0.001-10 atm m.
+
+    Returns
+    -------
+    float or array, -
+
+    Examples
+    --------
+    >>> round(float(smith_wsgg_emissivity(1200.0, 0.2 * 101325, "pw/pc=1")), 3)
+    0.239
+    >>> round(float(smith_wsgg_emissivity(1200.0, 0.2 * 101325, "pw/pc=2")), 3)
+    0.263
+
+    References
+    ----------
+    T.F. Smith, Z.F. Shen, J.N. Friedman, J. Heat Transfer 104 (1982) 602-608.
+    """
+    if case not in _SMITH:
+        raise InputError("gas_radiation.case", case, "one of " + ", ".join(_SMITH))
+    T = np.asarray(temperature, dtype=float)
+    pl = np.asarray(pressure_path_length, dtype=float) / ATM
+    if check:
+        check_positive("temperature", T, "K")
+        check_nonnegative("pressure_path_length", pl, "atm m")
+        warn_out_of_range("T", span(T), 600.0, 2400.0, "Smith et al. (1982) WSGG")
+    eps = np.zeros(np.broadcast(T, pl).shape)
+    for kappa, b1, b2, b3, b4 in _SMITH[case]:
+        a = b1 * 1e-1 + b2 * 1e-4 * T + b3 * 1e-7 * T**2 + b4 * 1e-11 * T**3
+        eps = eps + a * (1.0 - np.exp(-kappa * pl))
+    return eps
+
+
+def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=True):
+    r"""Total emissivity of CO2/H2O by the 4-grey-gas WSGG of Johansson et al. (2011).
+
+    .. math:: \varepsilon_g = \sum_{i=1}^{4} a_i [1 - e^{-\kappa_i (p_w + p_c) L}],\quad
+              \kappa_i = k_{1i} + k_{2i} MR,\quad
+              a_i = \sum_{j=1}^{3} (c_{1ij} + c_{2ij} MR + c_{3ij} MR^2)(T/1200)^{j-1}
+
+    Parameters
+    ----------
+    temperature : float or array, K
+    p_h2o, p_co2 : float or array, Pa
+        Partial pressures.
+    path_length : float or array, m
+        Mean beam length.
+    check : bool
+        Warn outside MR 0.125-2 and 500-2500 K. MR is clipped to [0.125, 2] for evaluation.
+
+    Returns
+    -------
+    float or array, -
+        Zero where there is no CO2 and no H2O.
+
+    Examples
+    --------
+    >>> p = 0.1 * 101325
+    >>> round(float(johansson_wsgg_emissivity(1200.0, p, p, 1.0)), 3)
+    0.236
+
+    References
+    ----------
+    R. Johansson, B. Leckner, K. Andersson, F. Johnsson, Combust. Flame 158 (2011) 893-901.
+    """
+    T = np.asarray(temperature, dtype=float)
+    pw = np.asarray(p_h2o, dtype=float) / ATM
+    pc = np.asarray(p_co2, dtype=float) / ATM
+    ptot = pw + pc
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mr_raw = np.where(pc > 0, pw / np.where(pc > 0, pc, 1.0), 2.0)
+    if check:
+        check_positive("temperature", T, "K")
+        check_nonnegative("p_h2o", pw)
+        check_nonnegative("p_co2", pc)
+        if np.any(ptot > 0):
+            warn_out_of_range("MR", span(mr_raw[...]), 0.125, 2.0, "Johansson et al. (2011) WSGG")
+            warn_out_of_range("T", span(T), 500.0, 2500.0, "Johansson et al. (2011) WSGG")
+    mr = np.clip(mr_raw, 0.125, 2.0)
+    tr = T / 1200.0
+    pl = ptot * np.asarray(path_length, dtype=float)
+    eps = np.zeros(np.broadcast(T, pl, mr).shape)
+    for (k1, k2), cij in zip(_JOHANSSON_K, _JOHANSSON_C, strict=True):
+        kappa = k1 + k2 * mr
+        a = 0.0
+        for j in range(3):
+            coeff = cij[0][j] + cij[1][j] * mr + cij[2][j] * mr**2
+            a = a + coeff * tr**j
+        eps = eps + a * (1.0 - np.exp(-kappa * pl))
+    return eps
+
+
+def gorog_mean_beam_length(diameter, bed_depth):
+    r"""Mean beam length of the kiln freeboard, :math:`L_e = 0.95\,D\,(1 - h/D)`.
+
+    Parameters
+    ----------
+    diameter : float or array, m
+        Kiln inner diameter.
+    bed_depth : float or array, m
+        Bed depth at the middle of the chord.
+
+    Returns
+    -------
+    float or array, m
+
+    Examples
+    --------
+    >>> round(float(gorog_mean_beam_length(0.4, 0.05)), 4)
+    0.3325
+
+    References
+    ----------
+    J.P. Gorog, J.K. Brimacombe, T.N. Adams, Metall. Trans. B 12B (1981) 55-70, eq. 50.
+    """
+    D = np.asarray(diameter, dtype=float)
+    return 0.95 * D * (1.0 - np.asarray(bed_depth, dtype=float) / D)

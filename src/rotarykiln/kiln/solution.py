@@ -1,0 +1,149 @@
+"""Result of a steady kiln heat solve: profiles, heat flows per path, balance and summary."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+__all__ = ["KilnSolution"]
+
+
+@dataclass(frozen=True)
+class KilnSolution:
+    """Steady kiln heat-transfer solution (SI units).
+
+    Face (node) profiles: ``z_nodes`` (m), ``t_bed_nodes``, ``t_gas_nodes`` (K).
+    Cell profiles: ``z`` (m), ``t_bed``, ``t_gas`` (cell means, K), ``t_wall`` (inner wall
+    surface, K), ``t_shell`` (outer shell surface, K), ``t_lining`` (interfaces, inner to
+    outer, shape ``(n_layers + 1, n)``, K), ``fill`` (-), ``fluxes`` (dict of W/m per cell:
+    gas->wall and gas->bed convection, covered wall->bed, radiation to wall and to bed, shell
+    loss, sources; and the coefficients h_gw, h_gb, h_cw in W/(m2 K) and the gas emissivity).
+    Summary: ``heat_to_solids``, ``heat_from_gas``, ``heat_release``, ``shell_loss`` (W),
+    ``energy_in``, ``energy_out`` (W, enthalpy flows relative to 298.15 K plus heat release and
+    shell loss), ``balance_closure`` = (in - out)/heat_to_solids (-).
+    Solver: ``iterations``, ``residual`` (max scaled residual), ``n_cells``.
+    """
+
+    name: str
+    z_nodes: np.ndarray
+    t_bed_nodes: np.ndarray
+    t_gas_nodes: np.ndarray
+    z: np.ndarray
+    t_bed: np.ndarray
+    t_gas: np.ndarray
+    t_wall: np.ndarray
+    t_shell: np.ndarray
+    t_lining: np.ndarray
+    fill: np.ndarray
+    fluxes: dict
+    extra: np.ndarray
+    heat_to_solids: float
+    heat_from_gas: float
+    heat_release: float
+    shell_loss: float
+    energy_in: float
+    energy_out: float
+    balance_closure: float
+    iterations: int
+    residual: float
+    n_cells: int
+    counter_current: bool
+    measurements: dict | None = field(default=None, repr=False)
+
+    @property
+    def bed_outlet_temperature(self) -> float:
+        """Bed temperature at the solids discharge (z = L), K."""
+        return float(self.t_bed_nodes[-1])
+
+    @property
+    def gas_outlet_temperature(self) -> float:
+        """Gas temperature where the gas leaves (z = 0 counter-current, z = L co-current), K."""
+        return float(self.t_gas_nodes[0] if self.counter_current else self.t_gas_nodes[-1])
+
+    @property
+    def thermal_efficiency(self) -> float:
+        """Heat to the solids over the heat given up by the gas plus the heat release, -."""
+        supplied = self.heat_from_gas + self.heat_release
+        return float(self.heat_to_solids / supplied) if supplied else float("nan")
+
+    def bed_temperature_at(self, z):
+        """Bed temperature (K) at positions ``z`` (m), linear between faces."""
+        return np.interp(z, self.z_nodes, self.t_bed_nodes)
+
+    def gas_temperature_at(self, z):
+        """Gas temperature (K) at positions ``z`` (m), linear between faces."""
+        return np.interp(z, self.z_nodes, self.t_gas_nodes)
+
+    def wall_temperature_at(self, z, interface: int = 0):
+        """Lining temperature (K) at ``z`` (m) at ``interface`` (0 inner surface, -1 shell)."""
+        return np.interp(z, self.z, self.t_lining[interface])
+
+    def summary(self) -> dict:
+        """Outlet temperatures, heat flows, efficiency, balance and solver figures."""
+        return {
+            "name": self.name,
+            "bed_outlet_temperature_K": self.bed_outlet_temperature,
+            "gas_outlet_temperature_K": self.gas_outlet_temperature,
+            "heat_to_solids_W": self.heat_to_solids,
+            "heat_from_gas_W": self.heat_from_gas,
+            "heat_release_W": self.heat_release,
+            "shell_loss_W": self.shell_loss,
+            "thermal_efficiency": self.thermal_efficiency,
+            "energy_balance_closure": self.balance_closure,
+            "newton_iterations": self.iterations,
+            "residual": self.residual,
+            "cells": self.n_cells,
+        }
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per cell: position, temperatures, fill and the heat flow of each path."""
+        data = {
+            "z_m": self.z,
+            "T_gas_K": self.t_gas,
+            "T_bed_K": self.t_bed,
+            "T_wall_K": self.t_wall,
+            "T_shell_K": self.t_shell,
+            "fill": self.fill,
+        }
+        for key, value in self.fluxes.items():
+            if key.startswith("q_"):
+                data[f"{key}_W_per_m"] = np.asarray(value)
+            elif key.startswith("h_"):
+                data[f"{key}_W_per_m2K"] = np.asarray(value)
+            elif key == "eps_gas":
+                data["eps_gas"] = np.broadcast_to(np.asarray(value), self.z.shape)
+        return pd.DataFrame(data)
+
+    def plot(self, ax=None):
+        """Temperature profiles (gas, bed, wall, shell), with measured points if any."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 4.2))
+        ax.plot(self.z_nodes, self.t_gas_nodes, color="tab:red", label="gas")
+        ax.plot(self.z_nodes, self.t_bed_nodes, color="tab:brown", label="bed")
+        ax.plot(self.z, self.t_wall, color="tab:gray", label="inner wall")
+        ax.plot(self.z, self.t_shell, color="tab:blue", ls="--", label="shell")
+        m = self.measurements or {}
+        for key, color, marker in (
+            ("gas", "tab:red", "o"),
+            ("bed", "tab:brown", "s"),
+            ("wall", "tab:gray", "^"),
+        ):
+            if f"z_{key}" in m and f"t_{key}" in m:
+                ax.plot(
+                    m[f"z_{key}"],
+                    m[f"t_{key}"],
+                    ls="none",
+                    marker=marker,
+                    mfc="none",
+                    color=color,
+                    label=f"{key}, measured",
+                )
+        ax.set_xlabel("z from solids inlet (m)")
+        ax.set_ylabel("temperature (K)")
+        ax.set_title(self.name)
+        ax.legend(fontsize=8, ncol=2)
+        return ax

@@ -1,0 +1,263 @@
+r"""Gas properties for the kiln freeboard, precomputed from Cantera into fitted tables.
+
+Cantera is called once per composition (when a :class:`GasPropertyTable` is built); a hot
+solver loop then evaluates piecewise-cubic fits, never Cantera. The specific heat is a cubic
+spline in :math:`T` and the enthalpy is its exact antiderivative, so
+
+.. math:: h(T) = h(T_{ref}) + \int_{T_{ref}}^{T} c_p\,dT
+
+holds to round-off and an energy balance written with :meth:`GasPropertyTable.enthalpy` is
+consistent with :meth:`GasPropertyTable.cp`. Conductivity and viscosity are cubic splines of
+the Cantera mixture-averaged transport values. The density follows the ideal-gas law.
+
+Reference state: :math:`h = 0` at 298.15 K for the *fixed* composition of the table (sensible
+enthalpy; no reactions inside the table).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+from scipy.optimize import brentq
+
+from rotarykiln.errors import InputError, check_positive
+
+__all__ = [
+    "GasPropertyTable",
+    "gas_table",
+    "air_table",
+    "parse_composition",
+    "BurntGas",
+    "burn_fuel",
+]
+
+R_UNIVERSAL = 8.314462618  # J/(mol K)
+T_REF = 298.15  # K
+MECHANISM = "gri30.yaml"
+T_MIN, T_MAX = 200.0, 3200.0
+
+
+def parse_composition(composition) -> tuple[tuple[str, float], ...]:
+    """Normalised mole fractions as a sorted tuple of ``(species, x)`` pairs.
+
+    Accepts ``"O2:0.21, N2:0.79"`` or a mapping.
+
+    Examples
+    --------
+    >>> parse_composition("N2:79, O2:21")
+    (('N2', 0.79), ('O2', 0.21))
+    """
+    if isinstance(composition, str):
+        items = {}
+        for part in composition.split(","):
+            part = part.strip()
+            if not part:
+                continue
+            try:
+                name, value = part.split(":")
+                items[name.strip()] = float(value)
+            except ValueError as exc:
+                raise InputError(
+                    "gas.composition", composition, "of the form 'N2:0.79, O2:0.21'"
+                ) from exc
+    else:
+        items = {str(k): float(v) for k, v in dict(composition).items()}
+    total = sum(items.values())
+    if not items or total <= 0 or any(v < 0 for v in items.values()):
+        raise InputError("gas.composition", composition, "a set of non-negative mole fractions")
+    return tuple(sorted((k, round(v / total, 12)) for k, v in items.items() if v > 0))
+
+
+@dataclass(frozen=True)
+class GasPropertyTable:
+    """Fitted property table of a gas mixture of fixed composition (SI units).
+
+    Build it with :func:`gas_table` (cached per composition). Attributes: ``composition``
+    (mole fractions), ``molar_mass`` (kg/mol), ``x_co2``, ``x_h2o`` (mole fractions used by the
+    gas radiation models), and the fitted splines. Valid 200-3200 K; evaluation outside is
+    clamped to that range (the solver keeps temperatures inside it).
+    """
+
+    composition: tuple[tuple[str, float], ...]
+    molar_mass: float
+    x_co2: float
+    x_h2o: float
+    _cp: CubicSpline = field(repr=False)
+    _h: object = field(repr=False)
+    _k: CubicSpline = field(repr=False)
+    _mu: CubicSpline = field(repr=False)
+
+    def cp(self, T):
+        """Specific heat at constant pressure, J/(kg K), at temperature ``T`` (K)."""
+        return self._cp(np.clip(T, T_MIN, T_MAX))
+
+    def enthalpy(self, T):
+        """Sensible enthalpy relative to 298.15 K, J/kg (exact integral of :meth:`cp`)."""
+        T = np.asarray(T, dtype=float)
+        Tc = np.clip(T, T_MIN, T_MAX)
+        # linear extension outside the table keeps h monotone and consistent with cp
+        return self._h(Tc) + self._cp(Tc) * (T - Tc)
+
+    def conductivity(self, T):
+        """Thermal conductivity, W/(m K)."""
+        return self._k(np.clip(T, T_MIN, T_MAX))
+
+    def viscosity(self, T):
+        """Dynamic viscosity, Pa s."""
+        return self._mu(np.clip(T, T_MIN, T_MAX))
+
+    def density(self, T, pressure=101325.0):
+        """Ideal-gas density, kg/m3, at ``T`` (K) and ``pressure`` (Pa)."""
+        return pressure * self.molar_mass / (R_UNIVERSAL * np.asarray(T, dtype=float))
+
+    def prandtl(self, T):
+        """Prandtl number, -."""
+        return self.cp(T) * self.viscosity(T) / self.conductivity(T)
+
+
+@lru_cache(maxsize=64)
+def _cantera_table(composition: tuple[tuple[str, float], ...]) -> GasPropertyTable:
+    import cantera as ct
+
+    gas = ct.Solution(MECHANISM)
+    unknown = [s for s, _ in composition if s not in gas.species_names]
+    if unknown:
+        raise InputError("gas.composition", ",".join(unknown), f"a species of {MECHANISM}")
+    X = dict(composition)
+    temps = np.concatenate([np.linspace(T_MIN, 1000.0, 33), np.linspace(1025.0, T_MAX, 88)])
+    cp = np.empty_like(temps)
+    k = np.empty_like(temps)
+    mu = np.empty_like(temps)
+    for i, T in enumerate(temps):
+        gas.TPX = T, 101325.0, X
+        cp[i] = gas.cp_mass
+        k[i] = gas.thermal_conductivity
+        mu[i] = gas.viscosity
+    cp_fit = CubicSpline(temps, cp)
+    h_fit = cp_fit.antiderivative()
+    offset = float(h_fit(T_REF))
+    h_fit.c[-1, :] -= offset  # h(T_REF) = 0; PPoly is piecewise: shift every piece
+    names = gas.species_names
+    gas.TPX = 300.0, 101325.0, X
+    xs = gas.X
+    return GasPropertyTable(
+        composition=composition,
+        molar_mass=gas.mean_molecular_weight / 1000.0,
+        x_co2=float(xs[names.index("CO2")]),
+        x_h2o=float(xs[names.index("H2O")]),
+        _cp=cp_fit,
+        _h=h_fit,
+        _k=CubicSpline(temps, k),
+        _mu=CubicSpline(temps, mu),
+    )
+
+
+def gas_table(composition) -> GasPropertyTable:
+    """Fitted property table for a gas of given composition (Cantera, GRI-Mech 3.0 species).
+
+    Parameters
+    ----------
+    composition : str or mapping
+        Mole fractions, e.g. ``"O2:0.21, N2:0.79"``; normalised.
+
+    Returns
+    -------
+    GasPropertyTable
+
+    Examples
+    --------
+    >>> air = gas_table("O2:0.21, N2:0.79")
+    >>> round(float(air.cp(1000.0)), 0)
+    1151.0
+    >>> abs(round(float(air.enthalpy(298.15)), 6))
+    0.0
+
+    References
+    ----------
+    D.G. Goodwin et al., Cantera 3 (https://cantera.org); GRI-Mech 3.0 thermo and transport.
+    """
+    return _cantera_table(parse_composition(composition))
+
+
+def air_table() -> GasPropertyTable:
+    """Property table of dry air (O2 0.21, N2 0.78, Ar 0.01 by mole)."""
+    return gas_table("O2:0.2095, N2:0.7808, AR:0.0097")
+
+
+@dataclass(frozen=True)
+class BurntGas:
+    """Products of a fuel burnt completely with air (water as vapour).
+
+    Attributes: ``composition`` (mole fractions of the products, from a Cantera equilibrium at
+    1200 K, i.e. complete combustion without dissociation), ``mass_flow`` (kg/s),
+    ``inlet_temperature`` (K, of the unburnt mixture), ``heat_release`` (W, the heat of
+    combustion at the inlet temperature, lower heating value basis), ``adiabatic_temperature``
+    (K, of the frozen products; above the dissociating equilibrium value by a few tens of K),
+    ``table`` (fitted properties of the products). By construction
+    ``mass_flow * (table.enthalpy(T_ad) - table.enthalpy(T_in)) == heat_release``.
+    """
+
+    composition: tuple[tuple[str, float], ...]
+    mass_flow: float
+    inlet_temperature: float
+    adiabatic_temperature: float
+    heat_release: float
+    table: GasPropertyTable
+
+
+def burn_fuel(
+    fuel, fuel_flow: float, air_flow: float, fuel_temperature=298.15, air_temperature=298.15
+) -> BurntGas:
+    """Burn ``fuel`` completely with air (Cantera, GRI-Mech 3.0 thermochemistry), 1 atm.
+
+    Parameters
+    ----------
+    fuel : str or mapping
+        Fuel composition by mole, e.g. ``"CH4:0.95, C2H6:0.03, N2:0.02"`` (natural gas).
+    fuel_flow, air_flow : float, kg/s
+        Mass flows of fuel and combustion air.
+    fuel_temperature, air_temperature : float, K
+
+    Returns
+    -------
+    BurntGas
+        The products (frozen at their equilibrium composition) and the heat release.
+
+    Examples
+    --------
+    >>> b = burn_fuel("CH4:1", 1.0e-3, 1.0e-3 * 17.2 * 1.1)
+    >>> round(b.heat_release / 1.0e-3 / 1e6, 1)  # MJ per kg of CH4: the LHV
+    50.0
+    >>> round(b.adiabatic_temperature, -1)
+    2180.0
+    """
+    import cantera as ct
+
+    check_positive("gas.fuel_flow", fuel_flow, "kg/s")
+    check_positive("gas.air_flow", air_flow, "kg/s")
+    fuel_x = dict(parse_composition(fuel))
+    gas_f = ct.Solution(MECHANISM)
+    gas_f.TPX = fuel_temperature, 101325.0, fuel_x
+    gas_a = ct.Solution(MECHANISM)
+    gas_a.TPX = air_temperature, 101325.0, "O2:0.21, N2:0.79"
+    qf = ct.Quantity(gas_f, mass=fuel_flow)
+    qa = ct.Quantity(gas_a, mass=air_flow)
+    mix = qf + qa
+    t_in = float(mix.T)
+    h_reactants = float(mix.enthalpy_mass)
+    # products: equilibrium at 1200 K (complete combustion, no dissociation), frozen after
+    mix.TP = 1200.0, 101325.0
+    mix.equilibrate("TP")
+    x = {s: float(v) for s, v in zip(mix.species_names, mix.X, strict=True) if v > 1e-7}
+    mix.TP = t_in, 101325.0
+    h_products = float(mix.enthalpy_mass)
+    comp = parse_composition(x)
+    table = gas_table(comp)
+    m = fuel_flow + air_flow
+    q = m * (h_reactants - h_products)
+    target = float(table.enthalpy(t_in)) + q / m
+    t_ad = float(brentq(lambda t: float(table.enthalpy(t)) - target, t_in, 2 * T_MAX))
+    return BurntGas(comp, m, t_in, t_ad, q, table)
