@@ -136,3 +136,12 @@ def test_rotarykiln_run_writes_the_rtd_prediction(tmp_path, capsys):
     result = json.loads(capsys.readouterr().out)
     assert result["rtd_peclet_source"] == "bongo_njeng2015"
     assert (out / "rtd_prediction.csv").is_file()
+
+
+def test_builtin_rtd_case():
+    from rotarykiln.case import load_case
+    from rotarykiln.cases import builtin_case_path
+
+    pred = predict_from_case(load_case(builtin_case_path("rtd/bongo_njeng_sand_rl")))
+    assert pred.mean_residence_time == pytest.approx(43.34 * 60)
+    assert pred.dispersion == pytest.approx(1.967e-6, rel=2e-3)  # notes sec. 2.6, sand RL
