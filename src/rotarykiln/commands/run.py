@@ -18,7 +18,7 @@ from rotarykiln.report import case_summary, format_table
 RUNNERS: dict[str, str] = {
     "transport": "rotarykiln.commands.bed:run_case_section",
     "heat": "rotarykiln.kiln.run:heat_runner",
-    "rtd": "rotarykiln.rtd.predict:run_section",
+    "rtd": "rotarykiln.kiln.coupling:rtd_runner",
 }
 """Section name -> "module:function(case, out_dir) -> dict" run when the case has that section."""
 
