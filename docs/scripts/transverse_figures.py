@@ -1,4 +1,4 @@
-"""Figures and validation numbers of docs/transverse.md and docs/validation_transverse.md.
+"""Figures and validation numbers of docs/transverse.md and docs/validation.md.
 
 Run from the repository root:  PYTHONPATH=src python docs/scripts/transverse_figures.py
 """

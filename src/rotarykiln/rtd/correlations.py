@@ -9,7 +9,7 @@ Eqs. 15 and 18 are not dimensionally homogeneous, so their input units matter. S
 eq. 18 takes "the International System of Units", but with rad/s, rad and kg/s it gives D about
 100-300 times below the paper's measured 1e-7 to 1e-4 m2/s; the units of its list of symbols
 (feed in kg/h, speed in rpm, slope and angle of repose in degrees, lengths in m, areas in m2)
-give values in that range (docs/validation_rtd.md). Those are the default here
+give values in that range (docs/validation.md). Those are the default here
 (``convention="symbols"``); ``convention="si"`` evaluates the literal SI reading. All functions take
 SI inputs and convert internally.
 """

@@ -263,7 +263,7 @@ def vanpuyvelde_apex_geometry(omega, fill):
         R_B = 193.61 + 4.606 N + 2.403 L \;[mm],\quad
         \theta_A = 2.56 + 0.813 N + 0.126 L \;[deg]
 
-    The signs are lost in the OCR; "+" is taken (see docs/validation_transverse.md). Valid for
+    The signs are lost in the OCR; "+" is taken (see docs/validation.md). Valid for
     the 570 mm drum only; used to locate the centre of rotation in images.
 
     Parameters
