@@ -77,11 +77,19 @@ def test_centre_of_rotation_below_chord():
     assert yo < 0.1 * xo / 0.5  # below the line A-B
 
 
-@given(st.floats(0.0, 1.2), st.floats(1.0, 6.0))
-def test_proportions_bounded(v, psr):
-    p_in, p_out = vanpuyvelde_concentration_proportion(psr, v, warn=False)
+@given(st.floats(0.0, 1.2), st.floats(1.0, 6.0), st.sampled_from(["backfit", "printed"]))
+def test_proportions_bounded(v, psr, coefficients):
+    p_in, p_out = vanpuyvelde_concentration_proportion(
+        psr, v, warn=False, coefficients=coefficients
+    )
     assert p_in >= 1.0 and p_out <= 1.0
-    assert p_in <= 2.29 and p_out >= 0.53
+    # bounded by the upper limit of i_in and the lower limit of i_out (2.29 / 0.53 printed)
+    assert p_in <= 2.295 and p_out >= 0.5282
+
+
+def test_unknown_coefficient_set_is_rejected():
+    with pytest.raises(InputError, match="coefficients"):
+        vanpuyvelde_concentration_proportion(2.0, 0.5, coefficients="table")
 
 
 def test_segregation_vanishes_at_high_velocity():

@@ -35,16 +35,26 @@ def test_mass_balance_to_machine_precision(mixing_runs):
 
 def test_table_8_1_final_contact(mixing_runs):
     sel = load_table("grid_mixing_selected").set_index("exp")
-    devs = []
+    mix = load_table("mixing_experiments").set_index("exp")
+    devs, devs_eq611 = [], []
     for exp in sel.index:
         row, res = mixing_runs[exp]
         lf_exp = row.lf_exp_mm / 1000
         devs.append(abs(res.final_contact / lf_exp - 1))
+        devs_eq611.append(mix.loc[exp, "lf_dev_percent"] / 100)
         # the thesis's simulated final contact (rounded to 1 m): ours within 1 m + 5 %
         assert res.final_contact == pytest.approx(sel.loc[exp, "lf_sim_m"], abs=1 + 0.05 * lf_exp)
-    # thesis: 17 % average deviation from experiment, from contacts printed to 1 m (exp 27 is
-    # 5 m: +-10 % from rounding alone), so 17 % + 2 %.
-    assert np.mean(devs) <= 0.19
+        # the thesis: the grid "accurately predicted the final mixing contact distances as
+        # described by the mathematical final contact distance model of Chapter 6" (eq 6.11):
+        # ours reaches a uniform bed whose contact is eq 6.11 of the whole bed
+        assert res.final_contact == pytest.approx(res.final_contact_bed, rel=0.005)
+    # Thesis: 17 % (Table 8.1: mean of 2, 37, 15, 16 = 17.5). Not reached: ours is 18.1 %
+    # (3.5, 33.6, 16.1, 19.3), i.e. the deviation of eq 6.11 itself, which the thesis prints
+    # for the same four runs in Table 6.3 (4, 34, 16, 19 %: 18.25 %). The thesis's grid departs
+    # from its own eq 6.11 by -2 to +3 % per run for reasons it does not give; no grid choice
+    # changes the final state of a single-size bed (see docs/validation.md). So the bound is the
+    # thesis's chapter-6 model on the same runs, from the shipped Table 6.3 column.
+    assert np.mean(devs) <= np.mean(devs_eq611)
 
 
 def test_table_8_1_mixing_time_overpredicted(mixing_runs):
@@ -110,6 +120,7 @@ def test_table_8_3_fines_move_inward(segregation_runs):
         assert sizes[-1] == sizes.min() and sizes[-1] < sizes[0]  # finest at the centre
         dev_in.append(abs(d_in / ref.d_inner_exp_mm - 1))
         dev_out.append(abs(d_out / ref.d_outer_exp_mm - 1))
-    # the thesis's simulation deviates 25.8 % (inner) and 9.0 % (outer) on average
+    # the thesis's simulation deviates 25.8 % (inner) and 9.0 % (outer) on average (ours 6.5 /
+    # 1.5 % with the back-fitted Table 7.3, 7.4 / 1.5 % with the printed one)
     assert np.mean(dev_in) <= 0.258
     assert np.mean(dev_out) <= 0.090

@@ -45,6 +45,7 @@ from rotarykiln.transverse.mixing import (
     RATIO_LIMIT_RATE,
 )
 from rotarykiln.transverse.pyrolysis import Thermochemistry
+from rotarykiln.transverse.segregation import segregation_coefficients
 
 __all__ = ["GridMaterial", "GridResult", "HeatingOptions", "simulate_grid"]
 
@@ -181,6 +182,7 @@ def simulate_grid(
     duration: float,
     initial: str = "layer",
     segregation: bool = True,
+    segregation_set: str | dict = "backfit",
     heating: HeatingOptions | None = None,
     snapshot_times=(),
     limits: dict | None = None,
@@ -201,6 +203,9 @@ def simulate_grid(
         Material 1 on top ("layer") or along the wall under material 0 ("smile").
     segregation : bool
         Apply the segregation routing.
+    segregation_set : {"backfit", "printed"} or dict
+        Table 7.3 coefficient set of the routing (see
+        :func:`~rotarykiln.transverse.segregation.segregation_coefficients`).
     heating : HeatingOptions, optional
         Heat transfer and pyrolysis (both materials need ``thermo``).
     snapshot_times : sequence of float, s
@@ -225,6 +230,7 @@ def simulate_grid(
     d = np.atleast_1d(np.asarray(sizes, dtype=float))
     check_positive("sizes", d, "m")
     check_positive("duration", duration, "s")
+    segregation_coefficients(1.0, segregation_set)  # InputError on an unknown set
     k_cls = len(d)
     lim = {
         "d_limit_rate": D_LIMIT_RATE,
@@ -342,7 +348,9 @@ def simulate_grid(
         act -= out
         vk = out[:, :k_cls] + out[:, k_cls : 2 * k_cls]
         if segregation:
-            beta = _segregation_split(act[:, :k_cls] + act[:, k_cls:ie], d, v_cv, b_share)
+            beta = _segregation_split(
+                act[:, :k_cls] + act[:, k_cls:ie], d, v_cv, b_share, segregation_set
+            )
         else:
             beta = np.broadcast_to(b_share[:, None], vk.shape)
         beta = np.where(has_top[:, None], beta, 1.0)
@@ -462,20 +470,14 @@ def _mix(act, d, k, v_cv, tau, lim):
     act[:, -1] = np.minimum(lf, act[:, -1] + np.where(both, rate, 0.0) * tau)
 
 
-# Table 7.3 inner-layer lines (lower, slope, intercept, upper)
-_M_IN = (-1.03, -0.56, 0.62, 0.00)
-_I_IN = (1.00, 0.61, 0.37, 2.29)
-
-
-def _segregation_split(vk, d, v_cv, b):
+def _segregation_split(vk, d, v_cv, b, coefficients="backfit"):
     """Share of each class's outflow sent to the bottom destination of each CV."""
     tot = vk.sum(axis=1)
     with np.errstate(invalid="ignore", divide="ignore"):
         dm = np.where(tot > 0, (vk @ d) / tot, 0.0)
         fine = (d[None, :] < dm[:, None]) & (vk > 0)
         psr = np.where(fine, dm[:, None] / d[None, :], 1.0)
-    m_in = np.clip(_M_IN[1] * psr + _M_IN[2], _M_IN[0], _M_IN[3])
-    i_in = np.clip(_I_IN[1] * psr + _I_IN[2], _I_IN[0], _I_IN[3])
+    m_in, i_in, _, _ = segregation_coefficients(psr, coefficients)
     p_in = np.maximum(1.0, m_in * v_cv[:, None] + i_in)
     bb = b[:, None]
     share_f = np.where(fine, np.minimum(1.0, bb * p_in), 0.0)
