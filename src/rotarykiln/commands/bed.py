@@ -29,7 +29,7 @@ def register(sub) -> None:
     add_quantity(p, "diameter", "drum inner diameter, e.g. 0.4 m")
     add_quantity(p, "length", "drum length, e.g. 2 m")
     add_quantity(p, "speed", "rotation speed, e.g. 3 rpm")
-    add_quantity(p, "slope", "drum slope, e.g. 1 deg or 2 %")
+    add_quantity(p, "slope", "drum slope, e.g. 1 deg or 2 %% (a grade)")
     add_quantity(p, "feed", "solids mass feed, e.g. 62 kg/h")
     add_quantity(p, "density", "bulk density, e.g. 1500 kg/m3")
     add_quantity(p, "repose", "dynamic angle of repose, e.g. 35 deg")
