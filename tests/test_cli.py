@@ -131,3 +131,29 @@ def test_case_value_errors_through_cli(capsys, tmp_path, line, message):
     code, _, err = run_cli(capsys, "run", str(p))
     assert code == 2
     assert len(err.strip().splitlines()) == 1 and message in err
+
+
+def _all_subcommand_paths():
+    import argparse
+
+    from rotarykiln.cli import build_parser
+
+    paths = []
+
+    def walk(parser, prefix):
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for name, sub in action.choices.items():
+                    paths.append([*prefix, name])
+                    walk(sub, [*prefix, name])
+
+    walk(build_parser(), [])
+    return paths
+
+
+@pytest.mark.parametrize("path", _all_subcommand_paths(), ids=" ".join)
+def test_every_subcommand_help_renders(capsys, path):
+    with pytest.raises(SystemExit) as info:
+        main([*path, "--help"])
+    assert info.value.code == 0
+    assert "usage:" in capsys.readouterr().out

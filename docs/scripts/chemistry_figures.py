@@ -1,4 +1,4 @@
-"""Figures and numbers of docs/chemistry.md, docs/studies.md and docs/validation_chemistry.md.
+"""Figures and numbers of docs/chemistry.md, docs/studies.md and docs/validation.md.
 
 Run: PYTHONPATH=src MPLBACKEND=Agg python docs/scripts/chemistry_figures.py
 Writes docs/figures/chemistry_*.png and prints the numbers quoted in the docs.

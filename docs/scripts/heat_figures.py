@@ -1,4 +1,4 @@
-"""Figures and the per-run table of docs/heat.md and docs/validation_heat.md.
+"""Figures and the per-run table of docs/heat.md and docs/validation.md.
 
 Run from the repository root:  PYTHONPATH=src python docs/scripts/heat_figures.py
 Writes docs/figures/heat_*.png and prints the markdown table of the 44 Tscheng runs.

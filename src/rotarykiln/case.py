@@ -38,6 +38,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
 from pydantic_core import PydanticCustomError
 
 from rotarykiln.errors import InputError
+from rotarykiln.transverse.config import TransverseSection
 from rotarykiln.units import to_si
 
 __all__ = [
@@ -60,6 +61,8 @@ __all__ = [
     "Material",
     "Operation",
     "Power",
+    "RTD",
+    "RTDLifters",
     "Pressure",
     "RotationRate",
     "Section",
@@ -395,6 +398,35 @@ class Chemistry(Section):
     expected: dict[str, Any] = {}
 
 
+class RTDLifters(Section):
+    """Lifters for the RTD correlations: type, number around the circumference, dimensions."""
+
+    type: Literal["none", "straight", "rectangular"] = "none"
+    count: Annotated[int, BeforeValidator(lambda v: _positive_int(v))] = 4
+    height: Length = 0.01
+    arm: Length | None = None  # second arm of a rectangular lifter (default: = height)
+
+
+class RTD(Section):
+    """Residence time distribution: a given mean residence time (or the transport model's) and a
+    Peclet number (given, or from a dispersion correlation)."""
+
+    mean_residence_time: Time | None = None
+    correlation: Literal["bongo_njeng2015", "sherritt2003", "sai1990"] = "bongo_njeng2015"
+    peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    model: Literal["open-open", "closed-closed", "open-closed", "gaussian"] = "open-open"
+    lifters: RTDLifters = RTDLifters()
+    holdup_fraction: Fraction | None = None  # Sherritt; default: feed x MRT / (rho_b V)
+    tracer_repose_angle: ReposeAngle | None = None  # Sai; default: the material's
+    tracer_density: Density | None = None  # Sai; default: the material's bulk density
+
+
+def _positive_int(v: Any) -> int:
+    if isinstance(v, bool) or not isinstance(v, int) or v < 1:
+        raise PydanticCustomError("number", "{value} is not an integer >= 1", {"value": v})
+    return v
+
+
 class Case(Section):
     """A complete case file."""
 
@@ -407,6 +439,8 @@ class Case(Section):
     transport: Transport | None = None
     heat: Heat | None = None
     chemistry: Chemistry | None = None
+    transverse: TransverseSection | None = None
+    rtd: RTD | None = None
 
 
 def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:

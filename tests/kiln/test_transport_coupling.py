@@ -55,3 +55,29 @@ def test_coupled_solve_closes_energy(model):
     sol = run_heat_case(parse_case(data))
     assert abs(sol.balance_closure) < 1e-6
     assert 298 < sol.summary()["bed_outlet_temperature_K"] < 535
+
+
+def test_rtd_prediction_uses_the_transport_mean_residence_time(tmp_path):
+    from rotarykiln.kiln.coupling import rtd_runner, transport_mean_residence_time
+
+    data = {
+        "name": "rtd from transport",
+        "kiln": {"length": "1.95 m", "diameter": "0.1013 m", "slope": "2 deg"},
+        "operation": {"speed": "3 rpm", "feed": "2.5 kg/h"},
+        "material": {
+            "bulk_density": "1422 kg/m3",
+            "repose_angle": "35 deg",
+            "particle_size": "0.55 mm",
+        },
+        "transport": {"model": "kramers", "dam_height": "23.5 mm"},
+        "rtd": {"correlation": "bongo_njeng2015", "model": "open-open", "peclet": 50},
+    }
+    case = parse_case(data)
+    mrt = transport_mean_residence_time(case)
+    summary = rtd_runner(case, tmp_path)
+    assert summary["rtd_mean_residence_time_s"] == pytest.approx(mrt, rel=1e-9)
+    # mean residence time = hold-up / volumetric feed, by another route
+    from rotarykiln.kiln.coupling import bed_profile_from_case
+
+    holdup = bed_profile_from_case(case).holdup_volume
+    assert holdup == pytest.approx(mrt * case.operation.feed / case.material.bulk_density, rel=1e-6)

@@ -2,7 +2,7 @@
 
 Regression bounds: the overall figures measured when this model was written (mean over the 44
 runs of the per-run RMSE) were, in K: bed 4.92 and gas 4.51 in the 1.25-1.78 m window; bed 11.26
-and gas 5.91 over the whole length (docs/validation_heat.md). The bounds below sit about 10 %
+and gas 5.91 over the whole length (docs/validation.md). The bounds below sit about 10 %
 above them, so that a change of closure or set-up that degrades the agreement fails here. The
 issue's goal (bed <= 10 K, gas <= 15 K in the window) is asserted as well. The thermocouple
 accuracy of the thesis is a few K, so differences below ~3 K per point are not meaningful.

@@ -4,7 +4,7 @@ Tolerance 0.5 percentage points of filling (the issue's requirement). The thesis
 decimals; its step size and quadrature are not stated, and its zero-feed value for R_c = 0.0262
 (16.37 %) implies R_c = 0.0260, i.e. a ~0.25 pp offset in the A4.7 upper curve. Rows whose
 printed value is OCR-illegible or contradicted by the thesis itself are excluded by their
-``status`` in the CSV (reasons in data/scott1986/README.md and docs/validation_transport.md).
+``status`` in the CSV (reasons in data/scott1986/README.md and docs/validation.md).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ LEGIBLE = ("printed", "ocr_fixed")
 TABLES = [f"a4_{k:02d}" for k in (1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 16)]
 
 # Legible thesis values our model does not reach within 0.5 pp, with the reason (documented in
-# docs/validation_transport.md). The test still bounds the deviation.
+# docs/validation.md). The test still bounds the deviation.
 KNOWN = {
     # Bachmann alpha_d at 53.5 and 66.9 % of critical speed (above the 50 % limit): alpha_d
     # rises to 65-73 deg; the thesis column is not reproduced (0.6 and 1.05 pp).

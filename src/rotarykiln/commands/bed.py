@@ -11,7 +11,6 @@ from __future__ import annotations
 import argparse
 
 from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print_json
-from rotarykiln.errors import InputError
 from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 from rotarykiln.report import format_table
 from rotarykiln.transport.solve import solve_bed
@@ -30,7 +29,7 @@ def register(sub) -> None:
     add_quantity(p, "diameter", "drum inner diameter, e.g. 0.4 m")
     add_quantity(p, "length", "drum length, e.g. 2 m")
     add_quantity(p, "speed", "rotation speed, e.g. 3 rpm")
-    add_quantity(p, "slope", "drum slope, e.g. 1 deg or 2 %")
+    add_quantity(p, "slope", "drum slope, e.g. 1 deg or 2 %% (a grade)")
     add_quantity(p, "feed", "solids mass feed, e.g. 62 kg/h")
     add_quantity(p, "density", "bulk density, e.g. 1500 kg/m3")
     add_quantity(p, "repose", "dynamic angle of repose, e.g. 35 deg")
@@ -115,30 +114,9 @@ def run(args: argparse.Namespace) -> int:
 
 def run_case_section(case, out) -> dict:
     """Runner for the ``transport:`` section of a case file (see rotarykiln.commands.run)."""
-    t = case.transport
-    mat, op, kiln = case.material, case.operation, case.kiln
-    for field, value in (
-        ("operation.feed", op.feed),
-        ("material.bulk_density", mat.bulk_density),
-        ("material.repose_angle", mat.repose_angle),
-    ):
-        if value is None:
-            raise InputError(field, None, "given for the transport section")
-    profile = solve_bed(
-        model=t.model,
-        diameter=kiln.diameter,
-        length=kiln.length,
-        speed=op.speed,
-        slope=kiln.slope,
-        feed=op.feed,
-        density=mat.bulk_density,
-        repose=mat.repose_angle,
-        static_repose=mat.static_repose_angle,
-        dam=t.dam_height,
-        weirs=[(w.position, w.height) for w in t.weirs],
-        friction=t.friction,
-        n_points=t.n_points,
-    )
+    from rotarykiln.kiln.coupling import bed_profile_from_case
+
+    profile = bed_profile_from_case(case)
     files = _write(profile, out)
     return {
         "transport_model": profile.model,

@@ -19,7 +19,7 @@ def register(sub) -> None:
     )
     add_quantity(p, "diameter", "drum inner diameter, e.g. 0.4 m")
     add_quantity(p, "radius", "drum inner radius (instead of --diameter)")
-    add_quantity(p, "fill", "fill fraction in (0, 1), e.g. 0.15 or 15 %")
+    add_quantity(p, "fill", "fill fraction in (0, 1), e.g. 0.15 or 15 %%")
     add_quantity(p, "depth", "bed depth at the chord middle, e.g. 5 cm")
     add_quantity(p, "half-angle", "half of the central angle of the bed, e.g. 40 deg")
     add_quantity(p, "chord", "bed surface width, e.g. 0.3 m (fill <= 0.5 assumed)")

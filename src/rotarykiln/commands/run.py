@@ -18,6 +18,7 @@ from rotarykiln.report import case_summary, format_table
 RUNNERS: dict[str, str] = {
     "transport": "rotarykiln.commands.bed:run_case_section",
     "heat": "rotarykiln.kiln.run:heat_runner",
+    "rtd": "rotarykiln.kiln.coupling:rtd_runner",
     "chemistry": "rotarykiln.kiln.reacting:reacting_runner",
 }
 """Section name -> "module:function(case, out_dir) -> dict" run when the case has that section."""

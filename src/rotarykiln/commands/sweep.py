@@ -1,7 +1,8 @@
 """``rotarykiln sweep``: run a model over a grid or one-at-a-time ranges of case fields.
 
-The model is any importable function ``module:function`` taking a case (nested dict) and
-returning a dict of scalars. Values keep their units as in a case file.
+The model is a name (``heat``, ``transport``: see :mod:`rotarykiln.studies.models`) or any
+importable function ``module:function`` taking a case (nested dict) and returning a dict of
+scalars. Values keep their units as in a case file.
 
 Example::
 
@@ -36,7 +37,11 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--case", required=True, help="case YAML file or built-in case name")
-    p.add_argument("--model", required=True, help="model function as module:function")
+    p.add_argument(
+        "--model",
+        required=True,
+        help="model: heat, transport (see rotarykiln.studies.models) or module:function",
+    )
     p.add_argument(
         "--grid",
         action="append",
@@ -77,9 +82,13 @@ def _ranges(items: list[str], option: str) -> dict[str, list]:
 
 
 def _load_model(spec: str):
+    from rotarykiln.studies.models import MODELS
+
+    if spec in MODELS:
+        return MODELS[spec]
     mod, sep, name = spec.partition(":")
     if not sep or not mod or not name:
-        raise InputError("--model", spec, "module:function")
+        raise InputError("--model", spec, f"a model name ({', '.join(MODELS)}) or module:function")
     try:
         func = getattr(importlib.import_module(mod), name)
     except (ImportError, AttributeError) as exc:

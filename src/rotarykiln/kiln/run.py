@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from rotarykiln.errors import InputError
+from rotarykiln.kiln.coupling import bed_fill_profile
 from rotarykiln.kiln.model import Closures, HeatKiln
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_heat
@@ -61,39 +62,6 @@ def flame_profile(length: float, start: float, flame_length: float, counter_curr
     [0.25, 0.0]
     """
     return FlameProfile(length, start, flame_length, counter_current)
-
-
-def bed_fill_profile(case) -> tuple[np.ndarray, np.ndarray]:
-    """The local fill along the kiln from the case's ``transport:`` bed model, as ``(z, fill)``.
-
-    This couples the axial transport model (Kramers or Scott, with dams and weirs) to the heat
-    model: the bed depth, and with it every exchange area, follows the computed profile.
-    """
-    from rotarykiln.transport.solve import solve_bed
-
-    t, m, op, k = case.transport, case.material, case.operation, case.kiln
-    for field, value in (
-        ("material.bulk_density", m.bulk_density),
-        ("material.repose_angle", m.repose_angle),
-    ):
-        if value is None:
-            raise InputError(field, None, "given when a transport: section sets the bed")
-    profile = solve_bed(
-        model=t.model,
-        diameter=k.diameter,
-        length=k.length,
-        speed=op.speed,
-        slope=k.slope,
-        feed=op.feed,
-        density=m.bulk_density,
-        repose=m.repose_angle,
-        static_repose=m.static_repose_angle,
-        dam=t.dam_height,
-        weirs=[(w.position, w.height) for w in t.weirs],
-        friction=t.friction,
-        n_points=max(t.n_points, 401),
-    )
-    return np.asarray(profile.z, dtype=float), np.asarray(profile.fill, dtype=float)
 
 
 def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:

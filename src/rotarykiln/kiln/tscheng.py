@@ -7,7 +7,7 @@ outer) refractory cement 12.7 mm, carbon steel 6.35 mm [both assumed] and minera
 insulation, absent on 1.02-1.22 m. The insulation thickness is the one that reproduces the
 wall loss of the thesis sample calculation (run A16, z = 1.25 m: 154.4 W/m at T_w = 369.2 K,
 measured between cement and shell) with ambient 298.15 K: it is derived from a published
-number, not fitted to the 44 runs. See docs/validation_heat.md.
+number, not fitted to the 44 runs. See docs/validation.md.
 """
 
 from __future__ import annotations

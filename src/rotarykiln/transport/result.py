@@ -176,7 +176,7 @@ class BedProfile:
             ax.set_aspect("equal")
         ax.set_xlim(0, self.length)
         ax.set_xlabel("distance from feed end z (m)")
-        ax.set_ylabel("height above drum bottom (m)")
+        ax.set_ylabel("height (m)")
         ax.set_title(f"{self.model}: mean fill {100 * self.mean_fill:.2f} %", fontsize=9)
         ax.legend(loc="upper right", fontsize=7)
         return ax

@@ -1,7 +1,7 @@
 r"""Saeman's kinematics of axial transport and McTait's dimensionless forms (seed 002, Boateng
 ch. 2, eqs. 2.4-2.17, with the printed errors corrected).
 
-Corrections (see docs/validation_transport.md): the denominators :math:`\sin\theta` of eqs. 2.6,
+Corrections (see docs/validation.md): the denominators :math:`\sin\theta` of eqs. 2.6,
 2.8, 2.12, 2.13 are :math:`\sin\xi`; eq. 2.13 integrates to :math:`R`, not :math:`r`; the second
 form of eq. 2.10 is :math:`\bar\tau = 2L\theta\sin\xi/(\omega L_c\tan\phi)`; eq. 2.16 misses
 :math:`y/R` in its first bracket; the exponent of eq. 2.17 is 3/2. Symbols: :math:`\xi` dynamic

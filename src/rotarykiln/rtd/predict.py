@@ -1,0 +1,269 @@
+r"""Predicted RTD of a kiln: a mean residence time and a Peclet number give E(t).
+
+The mean residence time comes from the case (``rtd.mean_residence_time``) or from a transport
+model passed in as a callable (``transport(case) -> seconds``; the ``kiln`` layer wires the
+transport package here, this package does not import it). The Peclet number is given
+(``rtd.peclet``) or follows from a dispersion correlation (:mod:`rotarykiln.rtd.correlations`):
+
+.. math::
+
+    Pe = \frac{uL}{D} = \frac{L^2}{D\,\tau}, \qquad \tau\,\bar\theta(Pe) = \bar t,
+
+solved together for :math:`\tau` (for open-open boundaries :math:`\bar\theta = 1 + 2/Pe`), so
+that the mean of the predicted E(t) is the given mean residence time.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from scipy import optimize
+
+from rotarykiln.errors import InputError, check_positive
+from rotarykiln.rtd.correlations import (
+    bongo_njeng_dispersion,
+    holdup_fraction,
+    sai_dispersion_number,
+    sherritt_dispersion,
+)
+from rotarykiln.rtd.dispersion import get_model
+from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
+
+__all__ = ["RTDPrediction", "peclet_from_case", "predict_from_case", "predict_rtd", "run_section"]
+
+
+@dataclass(frozen=True)
+class RTDPrediction:
+    """Predicted residence time distribution of a kiln (times in s, E in 1/s)."""
+
+    t: np.ndarray
+    exit_age: np.ndarray
+    cumulative: np.ndarray
+    model: str
+    tau: float
+    peclet: float
+    mean_residence_time: float
+    variance: float
+    length: float | None = None
+    source: str = ""
+
+    @property
+    def dispersion(self) -> float | None:
+        """D = L^2/(Pe tau) [m2/s] (None without a length)."""
+        return None if self.length is None else self.length**2 / (self.peclet * self.tau)
+
+    def summary(self) -> dict:
+        out = {
+            "rtd_model": self.model,
+            "rtd_peclet": self.peclet,
+            "rtd_peclet_source": self.source,
+            "rtd_mean_residence_time_s": self.mean_residence_time,
+            "rtd_variance_s2": self.variance,
+            "rtd_tau_s": self.tau,
+        }
+        if self.dispersion is not None:
+            out["rtd_dispersion_m2_s"] = self.dispersion
+        return out
+
+    def to_frame(self) -> pd.DataFrame:
+        return pd.DataFrame({"t_s": self.t, "E_per_s": self.exit_age, "F": self.cumulative})
+
+    def plot(self, ax=None, *, minutes: bool = True):
+        """E(t) of the prediction. Returns the Axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots()
+        k = 60.0 if minutes else 1.0
+        ax.plot(self.t / k, self.exit_age * k, "-", label=f"{self.model}, Pe = {self.peclet:.4g}")
+        ax.axvline(self.mean_residence_time / k, color="0.5", linestyle=":", label="mean")
+        ax.set_xlabel("t [min]" if minutes else "t [s]")
+        ax.set_ylabel("E(t) [1/min]" if minutes else "E(t) [1/s]")
+        ax.legend()
+        return ax
+
+
+def predict_rtd(
+    mean_residence_time: float,
+    *,
+    peclet: float | None = None,
+    dispersion: float | None = None,
+    length: float | None = None,
+    model: str = "open-open",
+    t=None,
+    n_points: int = 400,
+    source: str = "",
+) -> RTDPrediction:
+    """E(t) of a kiln with a given mean residence time and a Peclet number (or D and L).
+
+    Parameters
+    ----------
+    mean_residence_time : float
+        Mean of the predicted RTD [s].
+    peclet : float, optional
+        Peclet number uL/D [-] (give this, or ``dispersion`` with ``length``).
+    dispersion : float, optional
+        Axial dispersion coefficient D [m2/s].
+    length : float, optional
+        Kiln length [m] (needed with ``dispersion``; gives D otherwise).
+    model : str
+        Dispersion model with a Peclet number ("open-open", "closed-closed", ...).
+    t : array_like, optional
+        Times [s]; by default ``n_points`` from mean - 6 sd to mean + 8 sd.
+    n_points : int
+        Number of default times.
+    source : str
+        Free text recording where the Peclet number came from.
+
+    Returns
+    -------
+    RTDPrediction
+
+    Examples
+    --------
+    >>> p = predict_rtd(43.34 * 60, dispersion=2.8e-6, length=1.95)
+    >>> round(p.peclet), round(p.tau / 60, 2)
+    (524, 43.18)
+    """
+    check_positive("mean_residence_time", mean_residence_time, "s")
+    spec = get_model(model)
+    if spec.shape != "peclet":
+        raise InputError("model", model, "a dispersion model with a Peclet number")
+    if (peclet is None) == (dispersion is None):
+        raise InputError("peclet", peclet, "given, or else dispersion with length (exactly one)")
+    if peclet is not None:
+        check_positive("peclet", peclet)
+        tau = mean_residence_time / spec.moments(1.0, peclet)[0]
+    else:
+        check_positive("dispersion", dispersion, "m2/s")
+        if length is None:
+            raise InputError("length", None, "given with dispersion")
+        check_positive("length", length, "m")
+
+        def excess(tau):
+            return tau * spec.moments(1.0, length**2 / (dispersion * tau))[0] - mean_residence_time
+
+        tau = optimize.brentq(excess, 1e-9 * mean_residence_time, mean_residence_time, xtol=1e-12)
+        peclet = length**2 / (dispersion * tau)
+    mean, var = spec.moments(tau, peclet)
+    if t is None:
+        sd = np.sqrt(var)
+        t = np.linspace(max(mean - 6 * sd, 0.0), mean + 8 * sd, n_points)
+    t = np.asarray(t, dtype=float)
+    return RTDPrediction(
+        t,
+        spec.exit_age(t, tau, peclet),
+        spec.cdf(t, tau, peclet),
+        model,
+        float(tau),
+        float(peclet),
+        float(mean),
+        float(var),
+        length,
+        source,
+    )
+
+
+def _need(value, field: str, why: str):
+    if value is None:
+        raise InputError(field, "missing", f"given ({why})")
+    return value
+
+
+def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
+    """Peclet number of a case from ``rtd.peclet`` or the chosen correlation, and its source."""
+    sec, kiln, op, mat = case.rtd, case.kiln, case.operation, case.material
+    if sec.peclet is not None:
+        return sec.peclet, "given"
+    name = sec.correlation
+    why = f"for the {name} correlation"
+    if name == "sai1990":
+        theta = sec.tracer_repose_angle or _need(mat.repose_angle, "material.repose_angle", why)
+        rho = sec.tracer_density or _need(mat.bulk_density, "material.bulk_density", why)
+        if not kiln.slope > 0:
+            raise InputError("kiln.slope", kiln.slope, f"> 0 {why}")
+        return 1.0 / float(sai_dispersion_number(theta, kiln.slope, op.speed, rho)), name
+    if name == "sherritt2003":
+        dp = _need(mat.particle_size, "material.particle_size", why)
+        x = sec.holdup_fraction
+        if x is None:
+            feed = _need(op.feed, "operation.feed", why + " without rtd.holdup_fraction")
+            rho = _need(mat.bulk_density, "material.bulk_density", why)
+            x = holdup_fraction(feed, mean_residence_time, rho, kiln.diameter, kiln.length)
+        d = float(sherritt_dispersion(op.speed, kiln.diameter, dp, x))
+    else:
+        lifters = sec.lifters
+        if lifters.type == "none":
+            raise InputError(
+                "rtd.lifters.type", "none", f"straight or rectangular {why} (D = 0 without lifters)"
+            )
+        beta = mat.static_repose_angle or _need(mat.repose_angle, "material.repose_angle", why)
+        arm = 0.0 if lifters.type == "straight" else (lifters.arm or lifters.height)
+        area = lifter_cross_section(kiln.diameter / 2, lifters.height, beta, arm=arm)
+        d = float(
+            bongo_njeng_dispersion(
+                _need(op.feed, "operation.feed", why),
+                _need(mat.bulk_density, "material.bulk_density", why),
+                op.speed,
+                kiln.slope,
+                beta,
+                _need(mat.particle_size, "material.particle_size", why),
+                loading_lifter_area(lifters.count, area),
+                kiln.diameter,
+            )
+        )
+    tau = predict_rtd(mean_residence_time, dispersion=d, length=kiln.length, model=sec.model).tau
+    return kiln.length**2 / (d * tau), name
+
+
+def predict_from_case(case, *, transport: Callable | None = None) -> RTDPrediction:
+    """Predicted E(t) of the kiln of a case (its ``rtd`` section).
+
+    Parameters
+    ----------
+    case : rotarykiln.case.Case
+        Validated case with an ``rtd`` section.
+    transport : callable, optional
+        ``transport(case) -> mean residence time [s]``, used when ``rtd.mean_residence_time`` is
+        not given (the hook for the transport model).
+
+    Returns
+    -------
+    RTDPrediction
+    """
+    sec = case.rtd
+    if sec is None:
+        raise InputError("rtd", "missing", "an rtd: section in the case")
+    mrt = sec.mean_residence_time
+    if mrt is None:
+        if transport is None:
+            raise InputError(
+                "rtd.mean_residence_time",
+                "missing",
+                "given (no transport model is available to compute it)",
+            )
+        mrt = float(transport(case))
+        check_positive("mean residence time from the transport model", mrt, "s")
+    pe, source = peclet_from_case(case, mrt)
+    return predict_rtd(mrt, peclet=pe, length=case.kiln.length, model=sec.model, source=source)
+
+
+def run_section(case, out, *, transport: Callable | None = None) -> dict:
+    """Runner for ``rotarykiln run``: write rtd_prediction.csv/.png in ``out``, return a summary.
+
+    ``transport`` is passed on to :func:`predict_from_case` (the kiln layer may supply it).
+    """
+    import matplotlib.pyplot as plt
+
+    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic
+
+    pred = predict_from_case(case, transport=transport)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    pred.plot(ax)
+    write_frame_atomic(out / "rtd_prediction.csv", pred.to_frame())
+    save_figure_atomic(out / "rtd_prediction.png", fig)
+    plt.close(fig)
+    return pred.summary()
