@@ -20,11 +20,7 @@ from rotarykiln.kiln.reacting import (
     run_reacting_case,
 )
 from rotarykiln.kiln.reacting_solve import solve_reacting
-from rotarykiln.kiln.residence import (
-    OpenOpenDispersion,
-    open_open_dispersion_rtd,
-    sherritt_dispersion_coefficient,
-)
+from rotarykiln.kiln.residence import KilnRTD, residence_time_effects
 from rotarykiln.kiln.run import heat_runner
 
 matplotlib.use("Agg")
@@ -191,24 +187,39 @@ def test_sweep_model_returns_scalars():
     assert all(isinstance(v, int | float) for v in out.values())
 
 
-def test_open_open_rtd_moments():
-    rtd = OpenOpenDispersion(1000.0, 20.0)
+def test_kiln_rtd_moments_from_the_rtd_package():
+    rtd = KilnRTD("open-open", 1000.0, 20.0)
     t = np.linspace(0.0, 8000.0, 40001)
     e = rtd.exitage(t)
     mean = np.trapezoid(t * e, t)
     var = np.trapezoid((t - mean) ** 2 * e, t)
     assert np.trapezoid(e, t) == pytest.approx(1.0, abs=1e-6)
-    assert mean == pytest.approx(rtd.mean, rel=1e-5)  # tau (1 + 2/Pe), Levenspiel
-    assert var == pytest.approx(rtd.variance, rel=1e-4)  # tau^2 (2/Pe + 8/Pe^2)
-    assert open_open_dispersion_rtd(0.0, 1000.0, 20.0) == 0.0
+    assert mean == pytest.approx(1000.0 * (1 + 2 / 20.0), rel=1e-5)  # Levenspiel
+    assert var == pytest.approx(1000.0**2 * (2 / 20.0 + 8 / 20.0**2), rel=1e-4)
 
 
-def test_sherritt_dispersion_seed003_numbers():
-    # seed 003 notes (derived): rice 3 rpm X = 0.094 -> 3.8e-6; 10 rpm X = 0.039 -> 8.9e-6 m2/s
-    # (iD = 0.1013 m, d_p = 4.7e-3 m? not printed for rice): check the scaling laws instead
-    d1 = sherritt_dispersion_coefficient(0.3, 0.1, 1e-3, 0.1)
-    assert sherritt_dispersion_coefficient(0.6, 0.1, 1e-3, 0.1) / d1 == pytest.approx(2**0.39)
-    assert sherritt_dispersion_coefficient(0.3, 0.1, 1e-3, 0.2) / d1 == pytest.approx(2**-0.43)
+def test_residence_time_effects_peclet_sources(charcoal):
+    data = _data("charcoal_activation")
+    case = parse_case(data)
+    kiln, _ = reacting_kiln_from_case(case)
+    default = residence_time_effects(case, kiln, charcoal, n_tau=12)
+    # Sherritt: D = 0.0011 (N/Nc)^0.39 D^1.15 dp^0.46 X^-0.43, Pe = u L / D
+    assert default.peclet == pytest.approx(
+        kiln.bed_velocity * kiln.length / default.dispersion, rel=1e-12
+    )
+    data["chemistry"]["peclet"] = 5.0
+    low = residence_time_effects(parse_case(data), kiln, charcoal, n_tau=12)
+    assert low.peclet == 5.0
+    assert low.result.mean_residence_time == pytest.approx(kiln.residence_time * 1.4, rel=2e-3)
+    # strong dispersion: segregated and plug flow now differ visibly for this almost-linear
+    # conversion history (the mean shifts by 2/Pe)
+    assert abs(low.result.segregated - low.result.plug) < 0.2 * low.result.plug
+    del data["chemistry"]["peclet"]
+    data["material"]["particle_size"] = "5 mm"
+    data["rtd"] = {"correlation": "sherritt2003", "model": "closed-closed"}
+    cc = residence_time_effects(parse_case(data), kiln, charcoal, n_tau=12)
+    assert cc.result.mean_residence_time == pytest.approx(kiln.residence_time, rel=2e-3)
+    assert 0 < cc.result.segregated < 1
 
 
 def test_oil_shale_feed_with_pyrolysis_drying_and_calcination():

@@ -1,23 +1,22 @@
 r"""Residence-time effects on the conversion of a reacting kiln: plug flow vs segregated flow.
 
-The bed's residence time distribution is the open-open axial dispersion model (Levenspiel;
-seed 003 eq. 14) with :math:`\tau = L/u`:
+The bed's residence time distribution comes from :mod:`rotarykiln.rtd`: by default the open-open
+axial dispersion model (seed 003 eq. 14) with :math:`\tau = L/u_s` (the kiln's solids space
+time),
 
-.. math:: E(t) = \frac{1}{2}\sqrt{\frac{Pe}{\pi\,\tau\,t}}
-          \exp\!\left[-\frac{Pe\,(\tau - t)^2}{4\,\tau\,t}\right],\qquad Pe = \frac{u L}{D}
+.. math:: E(t) = \frac{1}{2\tau}\sqrt{\frac{Pe}{\pi\theta}}
+          \exp\!\left[-\frac{Pe\,(1 - \theta)^2}{4\,\theta}\right],\qquad
+          \theta = t/\tau,\quad Pe = \frac{u_s L}{D}
 
-and the dispersion coefficient comes from the correlation of Sherritt et al. (2003) (seed 003
-eq. 16, SI units, fill X < 0.5):
-
-.. math:: D = 0.0011\,(N/N_c)^{0.39}\,D_k^{1.15}\,d_p^{0.46}\,X^{-0.43}
+with the dispersion coefficient of Sherritt et al. (2003)
+(:func:`rotarykiln.rtd.correlations.sherritt_dispersion`, no lifters in seed 004's kilns);
+``chemistry.peclet`` overrides Pe, and a case ``rtd:`` section chooses the model and the
+correlation as for ``rotarykiln run`` (:func:`rotarykiln.rtd.predict.peclet_from_case`).
 
 Each residence-time class :math:`\tau'` crosses the kiln at :math:`L/\tau'` through the
 converged kiln's temperature, CO2 and heat-input profiles (frozen: a segregated parcel does not
-change them); its conversion is integrated by :func:`rotarykiln.chemistry.plugflow` and the
-outlet conversion is the RTD average (:func:`rotarykiln.chemistry.segregated`).
-
-The RTD package of the project (``rotarykiln.rtd``) was not on main when this was written: the
-open-open E(t) and the Sherritt correlation are local here and should be replaced by it.
+change them); its conversion is integrated by :mod:`rotarykiln.chemistry.plugflow` and the
+outlet conversion is the RTD average (:mod:`rotarykiln.chemistry.segregated`).
 """
 
 from __future__ import annotations
@@ -28,114 +27,38 @@ import numpy as np
 
 from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.chemistry.segregated import SegregatedResult, kiln_segregated_conversion
-from rotarykiln.errors import InputError, check_positive
-from rotarykiln.regimes import critical_speed
+from rotarykiln.errors import InputError
+from rotarykiln.rtd.correlations import sherritt_dispersion
+from rotarykiln.rtd.dispersion import get_model
 
-__all__ = [
-    "sherritt_dispersion_coefficient",
-    "open_open_dispersion_rtd",
-    "OpenOpenDispersion",
-    "ResidenceTimeEffects",
-    "residence_time_effects",
-]
-
-
-def sherritt_dispersion_coefficient(omega, radius, particle_diameter, fill):
-    r"""Axial dispersion coefficient of the bed, Sherritt et al. (2003), m2/s.
-
-    .. math:: D = 0.0011\,(\omega/\omega_c)^{0.39}\,(2R)^{1.15}\,d_p^{0.46}\,X^{-0.43},
-              \quad \omega_c = \sqrt{g/R}
-
-    Parameters
-    ----------
-    omega : float or array
-        Rotation rate, rad/s.
-    radius : float or array
-        Kiln inner radius, m.
-    particle_diameter : float or array
-        m.
-    fill : float or array
-        Hold-up volume fraction, - (valid < 0.5).
-
-    Returns
-    -------
-    float or ndarray
-        m2/s.
-
-    Examples
-    --------
-    Seed 003's sand benchmark (D = 0.1013 m, 3 rpm, d_p 0.55 mm, X = 0.081): 1.7e-6 m2/s.
-
-    >>> round(sherritt_dispersion_coefficient(3 * np.pi / 30, 0.1013 / 2, 0.55e-3, 0.081) * 1e6, 1)
-    1.7
-
-    References
-    ----------
-    R.G. Sherritt, J. Chaouki, A.K. Mehrotra, L.A. Behie, Axial dispersion in the
-    three-dimensional mixing of particles in a rotating drum reactor, Chem. Eng. Sci. 58
-    (2003) 401-415 (eq. 16 of seed 003).
-    """
-    check_positive("rtd.fill", fill)
-    check_positive("rtd.particle_diameter", particle_diameter, "m")
-    ratio = np.asarray(omega) / critical_speed(radius)
-    d = 0.0011 * ratio**0.39 * (2 * np.asarray(radius)) ** 1.15
-    d = d * np.asarray(particle_diameter) ** 0.46 * np.asarray(fill) ** -0.43
-    return d if np.ndim(d) else float(d)
-
-
-def open_open_dispersion_rtd(t, tau, peclet):
-    r"""Exit-age distribution of the open-open axial dispersion model, 1/s.
-
-    .. math:: E(t) = \frac{1}{2}\sqrt{\frac{Pe}{\pi\tau t}}
-              \exp\!\left[-\frac{Pe(\tau - t)^2}{4\tau t}\right]
-
-    Mean :math:`\tau(1 + 2/Pe)`, variance :math:`\tau^2(2/Pe + 8/Pe^2)`.
-
-    Parameters
-    ----------
-    t : array
-        Time, s (>= 0; E = 0 at t = 0).
-    tau : float
-        Space time L/u, s.
-    peclet : float
-        uL/D, -.
-
-    Examples
-    --------
-    >>> t = np.linspace(0, 5000, 20001)
-    >>> E = open_open_dispersion_rtd(t, 1000.0, 50.0)
-    >>> round(float(np.trapezoid(E, t)), 4), round(float(np.trapezoid(t * E, t)), 1)
-    (1.0, 1040.0)
-    """
-    check_positive("rtd.tau", tau, "s")
-    check_positive("rtd.peclet", peclet)
-    t = np.asarray(t, dtype=float)
-    ts = np.where(t > 0, t, 1.0)
-    e = (
-        0.5
-        * np.sqrt(peclet / (np.pi * tau * ts))
-        * np.exp(-peclet * (tau - ts) ** 2 / (4 * tau * ts))
-    )
-    return np.where(t > 0, e, 0.0)
+__all__ = ["KilnRTD", "ResidenceTimeEffects", "residence_time_effects"]
 
 
 @dataclass(frozen=True)
-class OpenOpenDispersion:
-    """RTD object in the rtdpy vocabulary: ``exitage(t)``, ``mean``, ``variance``."""
+class KilnRTD:
+    """An RTD of :mod:`rotarykiln.rtd` as an object with ``exitage(t)``, ``mean``, ``variance``.
 
+    Examples
+    --------
+    >>> rtd = KilnRTD("open-open", 1000.0, 50.0)
+    >>> round(rtd.mean, 1), round(float(rtd.exitage(1000.0)) * 1000, 3)
+    (1040.0, 1.995)
+    """
+
+    model: str
     tau: float
     peclet: float
 
     def exitage(self, t):
-        return open_open_dispersion_rtd(t, self.tau, self.peclet)
+        return get_model(self.model).exit_age(t, self.tau, self.peclet)
 
     @property
     def mean(self) -> float:
-        return self.tau * (1 + 2 / self.peclet)
+        return float(get_model(self.model).moments(self.tau, self.peclet)[0])
 
     @property
     def variance(self) -> float:
-        return self.tau**2 * (2 / self.peclet + 8 / self.peclet**2)
+        return float(get_model(self.model).moments(self.tau, self.peclet)[1])
 
 
 @dataclass(frozen=True)
@@ -182,18 +105,27 @@ def _reactant(sol, kiln) -> str:
 
 
 def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: int = 24):
-    """Plug vs segregated conversion of the kiln ``sol`` over its dispersion RTD.
+    """Plug vs segregated conversion of the kiln ``sol`` over its predicted RTD.
 
-    ``case.chemistry.peclet`` overrides the Sherritt correlation.
+    Pe: ``case.chemistry.peclet`` if given, else the case's ``rtd:`` section (model and
+    correlation, :func:`rotarykiln.rtd.predict.peclet_from_case`) if present, else the
+    Sherritt et al. (2003) correlation with the kiln's fill, open-open model.
     """
     species = species or _reactant(sol, kiln)
-    dispersion = sherritt_dispersion_coefficient(
-        kiln.omega, kiln.radius, kiln.particle_diameter, kiln.fill
+    model = "open-open"
+    dispersion = float(
+        sherritt_dispersion(kiln.omega, 2 * kiln.radius, kiln.particle_diameter, kiln.fill)
     )
-    pe = getattr(case.chemistry, "peclet", None) if case is not None else None
+    pe = getattr(getattr(case, "chemistry", None), "peclet", None)
+    if pe is None and getattr(case, "rtd", None) is not None:
+        from rotarykiln.rtd.predict import peclet_from_case
+
+        pe, _ = peclet_from_case(case, kiln.residence_time)
+        model = case.rtd.model
+        dispersion = kiln.length**2 / (pe * kiln.residence_time)
     if pe is None:
         pe = kiln.bed_velocity * kiln.length / dispersion
-    rtd = OpenOpenDispersion(kiln.residence_time, float(pe))
+    rtd = KilnRTD(model, kiln.residence_time, float(pe))
     z = sol.z
     fl = sol.fluxes
     gas = sol.gas_flows
