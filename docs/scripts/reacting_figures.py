@@ -48,6 +48,20 @@ for name in ("charcoal_activation", "limestone_calcination"):
     ax.figure.savefig(OUT / f"reacting_rtd_{name}.png", dpi=80)
     plt.close(ax.figure)
 
+# residence-time effects with incomplete calcination: less gas (0.018 kg/s), Sherritt Pe and Pe 20
+for pe in (None, 20.0):
+    data = _data("limestone_calcination")
+    data["chemistry"]["gas"]["inlet_flow"] = "0.018 kg/s"
+    if pe is not None:
+        data["chemistry"]["peclet"] = pe
+    case, kiln, sol = solve(data)
+    rtd = residence_time_effects(case, kiln, sol)
+    print("limestone 0.018 kg/s gas, Pe", pe, rtd.summary())
+    if pe is not None:
+        ax = rtd.plot()
+        ax.figure.savefig(OUT / "reacting_rtd_limestone_partial.png", dpi=80)
+        plt.close(ax.figure)
+
 # limestone with the CO2-equilibrium rate
 data = _data("limestone_calcination")
 data["chemistry"]["reactions"] = ["drying_ahmad", "calcination_equilibrium"]
