@@ -7,6 +7,8 @@ import matplotlib
 import numpy as np
 import pytest
 import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
@@ -247,3 +249,36 @@ def test_oil_shale_feed_with_pyrolysis_drying_and_calcination():
     assert sol.gas_flows["volatiles"][0] > 0
     assert sol.bed_flows["inert"][-1] == pytest.approx(sol.bed_flows["inert"][0])
     assert max(sol.element_closure.values()) < 1e-8 and abs(sol.energy_closure) < 1e-6
+
+
+def test_charcoal_mesh_refinement():
+    case = parse_case(_data("charcoal_activation"))
+    kiln, _ = reacting_kiln_from_case(case)
+    a = solve_reacting(kiln, 100)
+    b = solve_reacting(kiln, 200)
+    assert abs(a.bed_outlet_temperature - b.bed_outlet_temperature) < 2.0
+    assert abs(a.burn_off - b.burn_off) < 0.05 * a.burn_off
+
+
+@settings(max_examples=8, deadline=None)
+@given(
+    t_res=st.floats(2500.0, 9000.0),
+    gas=st.floats(0.012, 0.04),
+    feed_t=st.floats(300.0, 700.0),
+    steam=st.floats(0.001, 0.01),
+)
+def test_any_operating_point_closes_its_balances_or_fails_loudly(t_res, gas, feed_t, steam):
+    data = _data("charcoal_activation")
+    ch = data["chemistry"]
+    ch["residence_time"] = f"{t_res} s"
+    ch["gas"]["inlet_flow"] = f"{gas} kg/s"
+    ch["feed"]["temperature"] = f"{feed_t} K"
+    ch["gas"]["steam_flow"] = f"{steam} kg/s"
+    try:
+        sol = run_reacting_case(parse_case(data))
+    except ConvergenceError:
+        return  # loud failure is allowed; a silent bad result is not
+    assert abs(sol.energy_closure) < 1e-6
+    assert max(sol.element_closure.values()) < 1e-8
+    assert np.all(np.isfinite(sol.to_frame().to_numpy(dtype=float)))
+    assert -1e-9 <= sol.burn_off < 100.0
