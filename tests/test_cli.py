@@ -157,3 +157,18 @@ def test_every_subcommand_help_renders(capsys, path):
         main([*path, "--help"])
     assert info.value.code == 0
     assert "usage:" in capsys.readouterr().out
+
+
+def test_run_accepts_a_builtin_case_name(capsys, tmp_path):
+    code, out, _ = run_cli(capsys, "run", "heat/tscheng_A16", "--out", str(tmp_path), "--no-plots")
+    assert code == 0
+    assert json.loads((tmp_path / "summary.json").read_text())["name"] == "Tscheng 1978 run A16"
+
+
+def test_readme_first_lines_name_the_two_setup_commands():
+    from pathlib import Path
+
+    readme = Path(__file__).resolve().parents[1] / "README.md"
+    head = readme.read_text().splitlines()[:6]
+    assert any(line.startswith("make demo") for line in head)
+    assert any(line.startswith("make test") for line in head)

@@ -1,4 +1,4 @@
-"""Figures and numbers of docs/reacting.md and docs/validation_reacting.md.
+"""Figures and numbers of docs/reacting.md and docs/validation.md.
 
 Run: PYTHONPATH=src MPLBACKEND=Agg python docs/scripts/reacting_figures.py
 Writes docs/figures/reacting_*.png and docs/figures/reacting_chapter5.csv, prints the numbers.

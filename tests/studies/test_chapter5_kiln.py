@@ -32,7 +32,7 @@ def test_directions_as_seed_004_where_physical(study):
 
 def test_gas_flow_direction_departs_from_seed_004(study):
     # seed 004: more gas -> burn-off falls to 0 %. With the gas entering hot (1381 K), more gas
-    # brings more heat: the bed gets hotter and burn-off rises (docs/validation_reacting.md)
+    # brings more heat: the bed gets hotter and burn-off rises (docs/validation.md)
     sign, change, first, last = chapter5_directions(study)["chemistry.gas.inlet_flow"]
     assert CHAPTER5_DIRECTIONS["chemistry.gas.inlet_flow"] == -1
     assert sign == +1 and last > first

@@ -2,7 +2,7 @@
 
 Seed 004's figures are lost in the OCR; the checks below are the prose statements (notes 004,
 section 6) with tolerances that reflect "about"/"near" in the text and the inputs seed 004 does
-not give (gas flow, wall loss: calibration knobs, see docs/validation_reacting.md). Departures
+not give (gas flow, wall loss: calibration knobs, see docs/validation.md). Departures
 (the Luisser kinetics start below 900 K) are asserted as documented, not hidden.
 """
 
@@ -60,7 +60,7 @@ def test_limestone_reaction_zone_1_to_3_m(limestone):
 
 def test_limestone_onset_temperature_departure_documented(limestone):
     # seed 004: decomposition begins "around 900 K"; Luisser's rate as printed is already
-    # 1.8e-4 1/s at 850 K, so 1 % conversion is reached near 800 K (docs/validation_reacting.md)
+    # 1.8e-4 1/s at 850 K, so 1 % conversion is reached near 800 K (docs/validation.md)
     t1 = limestone.summary()["T_bed_conversion_1pct_CaCO3_K"]
     assert 750.0 <= t1 <= 900.0
 

@@ -26,7 +26,7 @@ RUNNERS: dict[str, str] = {
 
 def register(sub) -> None:
     p = sub.add_parser("run", help="validate a case file and run it", description=__doc__)
-    p.add_argument("case", help="case file (YAML)")
+    p.add_argument("case", help="case file (YAML) or the name of a built-in case")
     p.add_argument("--out", help="output folder (default: <case name>-results)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
     p.add_argument("--no-plots", action="store_true", help="do not write figures")
@@ -56,8 +56,20 @@ def run_case(case, out: Path, *, plots: bool = True) -> dict:
     return summary
 
 
+def case_path(spec: str) -> Path:
+    """A case file path, or the path of the built-in case of that name (``heat/tscheng_A16``)."""
+    path = Path(spec)
+    if path.is_file() or path.suffix in (".yaml", ".yml"):
+        return path
+    from rotarykiln.cases import builtin_case_path, list_builtin_cases
+
+    if spec in list_builtin_cases():
+        return builtin_case_path(spec)
+    return path
+
+
 def run(args: argparse.Namespace) -> int:
-    case = load_case(args.case)
+    case = load_case(case_path(args.case))
     out = out_dir(args.out, f"{Path(args.case).stem}-results")
     summary = run_case(case, out, plots=not args.no_plots)
     if args.json:
