@@ -80,8 +80,29 @@ def _fmt(value: Any) -> str:
     return str(value)
 
 
+def _inside(value: Any, low: float, closed_low: bool, high: float, closed_high: bool) -> bool:
+    """Fast path of the checks: True when every element is finite and inside the interval.
+
+    Two reductions (min and max, which propagate NaN) instead of boolean temporaries, so the
+    checks stay cheap on large arrays; False sends the caller to the slow path that finds the
+    offending element and raises.
+    """
+    if isinstance(value, float | int) and not isinstance(value, bool):
+        lo = hi = float(value)
+    else:
+        arr = np.asarray(value, dtype=float)
+        if arr.size == 0:
+            return True
+        lo, hi = float(np.min(arr)), float(np.max(arr))
+    ok_low = lo >= low if closed_low else lo > low
+    ok_high = hi <= high if closed_high else hi < high
+    return ok_low and ok_high and np.isfinite(lo) and np.isfinite(hi)
+
+
 def check_positive(field: str, value: Any, unit: str = "") -> None:
     """Raise :class:`InputError` unless every element of ``value`` is finite and > 0."""
+    if _inside(value, 0.0, False, np.inf, False):
+        return
     arr = np.asarray(value, dtype=float)
     bad = ~np.isfinite(arr) | (arr <= 0)
     if np.any(bad):
@@ -91,6 +112,8 @@ def check_positive(field: str, value: Any, unit: str = "") -> None:
 
 def check_nonnegative(field: str, value: Any, unit: str = "") -> None:
     """Raise :class:`InputError` unless every element of ``value`` is finite and >= 0."""
+    if _inside(value, 0.0, True, np.inf, False):
+        return
     arr = np.asarray(value, dtype=float)
     bad = ~np.isfinite(arr) | (arr < 0)
     if np.any(bad):
@@ -109,6 +132,8 @@ def check_range(
     unit: str = "",
 ) -> None:
     """Raise :class:`InputError` unless ``low < value < high`` (ends closed on request)."""
+    if _inside(value, low, closed_low, high, closed_high):
+        return
     arr = np.asarray(value, dtype=float)
     ok_low = arr >= low if closed_low else arr > low
     ok_high = arr <= high if closed_high else arr < high

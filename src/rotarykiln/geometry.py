@@ -77,7 +77,7 @@ def fill_from_half_angle(theta):
 
     References
     ----------
-    Boateng, Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
     theta = np.asarray(theta, dtype=float)
     check_range("theta", theta, 0.0, np.pi, closed_low=True, closed_high=True, unit="rad")
@@ -96,6 +96,10 @@ def half_angle_from_fill(fill, *, tol: float = 1e-11, max_iter: int = 60):
     ----------
     fill : float or array, -
         Fill fraction in [0, 1].
+    tol : float, -
+        Relative step below which Newton's iteration stops.
+    max_iter : int
+        Most iterations.
 
     Returns
     -------
@@ -108,6 +112,10 @@ def half_angle_from_fill(fill, *, tol: float = 1e-11, max_iter: int = 60):
     True
     >>> round(float(np.degrees(half_angle_from_fill(0.1))), 4)
     46.6031
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
     fill = np.asarray(fill, dtype=float)
     check_range("fill", fill, 0.0, 1.0, closed_low=True, closed_high=True)
@@ -160,6 +168,10 @@ def half_angle_from_depth(depth, radius):
     --------
     >>> round(float(half_angle_from_depth(0.2, 0.2)), 12) == round(np.pi / 2, 12)
     True
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
     depth = np.asarray(depth, dtype=float)
     radius = np.asarray(radius, dtype=float)
@@ -172,18 +184,47 @@ def half_angle_from_depth(depth, radius):
 def depth_from_half_angle(theta, radius):
     r"""Bed depth from the half-angle: :math:`h = R(1-\cos\theta) = 2R\sin^2(\theta/2)`, m.
 
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
+        Depth at the middle of the chord, in [0, 2R].
+
     Examples
     --------
     >>> round(float(depth_from_half_angle(np.pi / 2, 0.3)), 12)
     0.3
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
-    theta = np.asarray(theta, dtype=float)
-    check_range("theta", theta, 0.0, np.pi, closed_low=True, closed_high=True, unit="rad")
-    return 2.0 * np.asarray(radius, dtype=float) * np.sin(theta / 2.0) ** 2
+    theta, radius = _check_theta_radius(theta, radius)
+    return 2.0 * radius * np.sin(theta / 2.0) ** 2
 
 
 def fill_from_depth(depth, radius):
-    """Fill fraction from the bed depth (m) and drum radius (m).
+    r"""Fill fraction from the bed depth and drum radius.
+
+    .. math:: f = \frac{\theta - \sin\theta\cos\theta}{\pi},\quad \theta = \arccos(1 - h/R)
+
+    Parameters
+    ----------
+    depth : float or array, m
+        Bed depth at the middle of the chord, in [0, 2R].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, -
+        Fill fraction in [0, 1].
 
     Examples
     --------
@@ -191,17 +232,39 @@ def fill_from_depth(depth, radius):
     0.5
     >>> round(float(fill_from_depth(0.2, 1.0)), 4)
     0.052
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
     return fill_from_half_angle(half_angle_from_depth(depth, radius))
 
 
 def depth_from_fill(fill, radius):
-    """Bed depth (m) from the fill fraction and drum radius (m).
+    r"""Bed depth from the fill fraction and drum radius (inverse of :func:`fill_from_depth`).
+
+    .. math:: h = R(1 - \cos\theta(f))
+
+    Parameters
+    ----------
+    fill : float or array, -
+        Fill fraction in [0, 1].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
+        Depth at the middle of the chord, in [0, 2R].
 
     Examples
     --------
     >>> round(float(depth_from_fill(0.5, 2.0)), 12)
     2.0
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
     return depth_from_half_angle(half_angle_from_fill(fill), radius)
 
@@ -209,13 +272,28 @@ def depth_from_fill(fill, radius):
 def chord_from_half_angle(theta, radius):
     r"""Chord (free-surface width) :math:`L_c = 2R\sin\theta`, m.
 
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
+
     Examples
     --------
     >>> round(float(chord_from_half_angle(np.pi / 2, 1.5)), 12)
     3.0
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
-    theta = np.asarray(theta, dtype=float)
-    return 2.0 * np.asarray(radius, dtype=float) * np.sin(theta)
+    theta, radius = _check_theta_radius(theta, radius)
+    return 2.0 * radius * np.sin(theta)
 
 
 def half_angle_from_chord(chord, radius, *, more_than_half: bool = False):
@@ -223,10 +301,27 @@ def half_angle_from_chord(chord, radius, *, more_than_half: bool = False):
     ``more_than_half=False`` returns :math:`\theta = \arcsin(L_c/2R) \le \pi/2` (fill <= 0.5),
     ``True`` returns :math:`\pi - \theta`.
 
+    Parameters
+    ----------
+    chord : float or array, m
+        Width of the bed surface, in [0, 2R].
+    radius : float or array, m
+        Drum inner radius, > 0.
+    more_than_half : bool
+        Pick the segment larger than half the drum.
+
+    Returns
+    -------
+    float or array, rad
+
     Examples
     --------
     >>> round(float(np.degrees(half_angle_from_chord(1.0, 1.0))), 9)
     30.0
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
     chord = np.asarray(chord, dtype=float)
     radius = np.asarray(radius, dtype=float)
@@ -239,48 +334,184 @@ def half_angle_from_chord(chord, radius, *, more_than_half: bool = False):
 def bed_area(theta, radius):
     r"""Bed cross-sectional area :math:`A = R^2(\theta - \sin\theta\cos\theta)`, m2.
 
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m2
+
     Examples
     --------
     >>> round(float(bed_area(np.pi / 2, 1.0)), 12) == round(np.pi / 2, 12)
     True
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
+    theta, radius = _check_theta_radius(theta, radius)
+    return _bed_area(theta, radius)
+
+
+def _check_theta_radius(theta, radius):
+    """Both as float arrays after the checks theta in [0, pi] rad and radius > 0 m."""
+    theta = np.asarray(theta, dtype=float)
     radius = np.asarray(radius, dtype=float)
-    return np.pi * radius**2 * fill_from_half_angle(theta)
+    check_range("theta", theta, 0.0, np.pi, closed_low=True, closed_high=True, unit="rad")
+    check_positive("radius", radius, "m")
+    return theta, radius
+
+
+def _bed_area(theta, radius):
+    return radius**2 * _x_minus_sin(2.0 * theta) / 2.0
 
 
 def covered_wall_arc(theta, radius):
-    r"""Wall arc in contact with the bed, :math:`2R\theta`, m."""
-    return 2.0 * np.asarray(radius, dtype=float) * np.asarray(theta, dtype=float)
+    r"""Wall arc in contact with the bed, :math:`2R\theta`, m.
+
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
+
+    Examples
+    --------
+    >>> round(float(covered_wall_arc(np.pi / 2, 1.0)), 6)
+    3.141593
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
+    """
+    theta, radius = _check_theta_radius(theta, radius)
+    return 2.0 * radius * theta
 
 
 def exposed_wall_arc(theta, radius):
-    r"""Wall arc exposed to the freeboard gas, :math:`2R(\pi - \theta)`, m."""
-    return 2.0 * np.asarray(radius, dtype=float) * (np.pi - np.asarray(theta, dtype=float))
+    r"""Wall arc exposed to the freeboard gas, :math:`2R(\pi - \theta)`, m.
+
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
+
+    Examples
+    --------
+    >>> round(float(exposed_wall_arc(np.pi / 3, 1.0)), 6)
+    4.18879
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
+    """
+    theta, radius = _check_theta_radius(theta, radius)
+    return 2.0 * radius * (np.pi - theta)
 
 
 def exposed_bed_width(theta, radius):
-    r"""Width of the bed surface exposed to the freeboard (the chord), :math:`2R\sin\theta`, m."""
+    r"""Width of the bed surface exposed to the freeboard (the chord), :math:`2R\sin\theta`, m.
+
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
+
+    Examples
+    --------
+    >>> round(float(exposed_bed_width(np.pi / 6, 1.0)), 6)
+    1.0
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
+    """
     return chord_from_half_angle(theta, radius)
 
 
 def freeboard_area(theta, radius):
-    r"""Freeboard (gas) cross-sectional area :math:`\pi R^2 - A_{bed}`, m2."""
-    radius = np.asarray(radius, dtype=float)
-    return np.pi * radius**2 - bed_area(theta, radius)
+    r"""Freeboard (gas) cross-sectional area :math:`\pi R^2 - A_{bed}`, m2.
+
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m2
+
+    Examples
+    --------
+    >>> round(float(freeboard_area(np.pi / 2, 1.0)), 6)
+    1.570796
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
+    """
+    theta, radius = _check_theta_radius(theta, radius)
+    return np.pi * radius**2 - _bed_area(theta, radius)
 
 
 def freeboard_hydraulic_diameter(theta, radius):
     r"""Hydraulic diameter of the freeboard, :math:`D_h = 4A_{fb}/(2R(\pi-\theta) + 2R\sin\theta)`, m.
 
-    The wetted perimeter is the exposed wall arc plus the bed surface chord.
+    The wetted perimeter is the exposed wall arc plus the bed surface chord. A full drum
+    (:math:`\theta = \pi`) has no freeboard: :math:`D_h \to 0` (the limit, not 0/0).
+
+    Parameters
+    ----------
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+    radius : float or array, m
+        Drum inner radius, > 0.
+
+    Returns
+    -------
+    float or array, m
 
     Examples
     --------
     >>> round(float(freeboard_hydraulic_diameter(0.0, 0.5)), 12)
     1.0
+    >>> float(freeboard_hydraulic_diameter(np.pi, 0.5))
+    0.0
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
-    perimeter = exposed_wall_arc(theta, radius) + exposed_bed_width(theta, radius)
-    return 4.0 * freeboard_area(theta, radius) / perimeter
+    theta, radius = _check_theta_radius(theta, radius)
+    perimeter = 2.0 * radius * (np.pi - theta + np.sin(theta))
+    area = np.pi * radius**2 - _bed_area(theta, radius)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        dh = 4.0 * area / perimeter
+    return np.where(perimeter > 0, dh, 0.0)
 
 
 @dataclass(frozen=True)
@@ -296,6 +527,10 @@ class CrossSection:
     >>> cs = CrossSection.from_fill(0.5, radius=1.0)
     >>> round(float(cs.depth), 12)
     1.0
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.3 (arccos argument corrected).
     """
 
     radius: np.ndarray
@@ -351,8 +586,7 @@ class CrossSection:
 
     @property
     def hydraulic_diameter(self):
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return freeboard_hydraulic_diameter(self.theta, self.radius)
+        return freeboard_hydraulic_diameter(self.theta, self.radius)
 
     def as_dict(self) -> dict[str, float | np.ndarray]:
         """Every quantity, keyed by name with its SI unit in the key."""

@@ -90,10 +90,25 @@ def froude_number(speed, radius, g: float = G):
 def critical_speed(radius, g: float = G):
     r"""Critical (centrifuging) speed :math:`\omega_c = \sqrt{g/R}`, rad/s (Fr = 1).
 
+    Parameters
+    ----------
+    radius : float or array, m
+        Drum inner radius (> 0).
+    g : float, m/s2
+        Gravitational acceleration.
+
+    Returns
+    -------
+    float or array, rad/s
+
     Examples
     --------
     >>> round(float(critical_speed(1.0)), 4)
     3.1316
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.2.
     """
     check_positive("radius", radius, "m")
     return np.sqrt(g / np.asarray(radius, float))
@@ -102,10 +117,27 @@ def critical_speed(radius, g: float = G):
 def critical_speed_rpm(radius, g: float = G):
     r"""Critical speed in rpm, :math:`N_c = (60/2\pi)\sqrt{g/R} \approx 42.3/\sqrt{D}`.
 
+    For display only: every other function takes rad/s.
+
+    Parameters
+    ----------
+    radius : float or array, m
+        Drum inner radius (> 0).
+    g : float, m/s2
+        Gravitational acceleration.
+
+    Returns
+    -------
+    float or array, rpm
+
     Examples
     --------
     >>> [round(float(critical_speed_rpm(d / 2)), 1) for d in (0.2, 0.4, 0.57, 6.0)]
     [94.6, 66.9, 56.0, 17.3]
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.2.
     """
     return critical_speed(radius, g) / RPM
 
@@ -113,10 +145,27 @@ def critical_speed_rpm(radius, g: float = G):
 def fraction_of_critical(speed, radius, g: float = G):
     r"""Fraction of critical speed :math:`\omega/\omega_c = \sqrt{Fr}`.
 
+    Parameters
+    ----------
+    speed : float or array, rad/s
+        Drum angular speed (>= 0).
+    radius : float or array, m
+        Drum inner radius (> 0).
+    g : float, m/s2
+        Gravitational acceleration.
+
+    Returns
+    -------
+    float or array, -
+
     Examples
     --------
     >>> round(float(fraction_of_critical(5 * RPM, 3.0)), 3)
     0.29
+
+    References
+    ----------
+    Boateng, A. A., Rotary Kilns, ch. 2, eq. 2.2.
     """
     check_nonnegative("speed", speed, "rad/s")
     return np.asarray(speed, float) / critical_speed(radius, g)
@@ -130,11 +179,21 @@ def critical_wall_friction_mellmann(fill, repose_angle, froude):
     with :math:`\varepsilon` the half bed angle (the half-angle of :mod:`rotarykiln.geometry`),
     :math:`\xi` the dynamic angle of repose and :math:`f` the fill.
 
+    Validity: rolling and slumping beds (Fr < 0.1), fill in (0, 1).
+
     Parameters
     ----------
     fill : float or array, -
+        Fill fraction in (0, 1).
     repose_angle : float or array, rad
+        Dynamic angle of repose, in (0, pi/2).
     froude : float or array, -
+        Rotational Froude number, >= 0.
+
+    Returns
+    -------
+    float or array, -
+        Critical wall friction coefficient.
 
     Examples
     --------
@@ -148,6 +207,8 @@ def critical_wall_friction_mellmann(fill, repose_angle, froude):
     from rotarykiln.geometry import half_angle_from_fill
 
     check_range("fill", fill, 0.0, 1.0)
+    check_range("repose_angle", repose_angle, 0.0, np.pi / 2, unit="rad")
+    check_nonnegative("froude", froude)
     eps = half_angle_from_fill(fill)
     f = np.asarray(fill, float)
     return 2 * np.sin(eps) ** 3 * np.sin(repose_angle) / (3 * np.pi * f * (1 + np.asarray(froude)))
@@ -255,16 +316,24 @@ def classify_regime(
     wall_friction : float, optional, -
         Wall friction coefficient; with ``repose_angle`` (rad) it lets the Mellmann criterion
         decide slipping by the critical wall friction.
+    repose_angle : float or array, optional, rad
+        Dynamic angle of repose, needed with ``wall_friction``.
 
     Returns
     -------
     RegimeResult
+        ``name`` of the regime at each point, with ``froude`` (-) and ``fill`` (-).
 
     Examples
     --------
     >>> fr = froude_number(5 * RPM, 3.0)
     >>> str(classify_regime(fr, 0.3).name), str(classify_regime(fr, 0.3, criterion="henein").name)
     ('cascading', 'rolling')
+
+    References
+    ----------
+    Mellmann, J. (2001) Powder Technol. 118, 251-270, Table 1; Henein, H., Brimacombe, J. K.,
+    Watkinson, A. P. (1983) Metall. Trans. B 14, 191-205.
     """
     fr = np.asarray(froude, float)
     f = np.asarray(fill, float)
@@ -288,6 +357,7 @@ def classify_regime(
         if wall_friction is not None:
             if repose_angle is None:
                 raise InputError("repose_angle", None, "given when wall_friction is given")
+            check_nonnegative("wall_friction", wall_friction)
             mu_c = critical_wall_friction_mellmann(f, repose_angle, fr)
             slip = (np.asarray(wall_friction) < mu_c) & (fr < b.cataracting_min)
             name = np.where(slip, "slipping", name)
