@@ -30,7 +30,7 @@ import warnings
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from rotarykiln.errors import InputError, OutOfRangeWarning, check_positive
+from rotarykiln.errors import InputError, OutOfRangeWarning, check_nonnegative, check_positive
 from rotarykiln.geometry import fill_from_half_angle
 from rotarykiln.transport._common import (
     as_axial_function,
@@ -81,7 +81,15 @@ def kramers_max_uniform_flow(radius, speed, slope, repose):
     --------
     >>> round(float(kramers_max_uniform_flow(0.2, 0.314, np.radians(1), np.radians(35))), 7)
     5.1e-05
+
+    References
+    ----------
+    Kramers, H., Croockewit, P. (1952) Chem. Eng. Sci. 1, 259; Saeman, W. C. (1951) Chem. Eng.
+    Prog. 47, 508; Scott, W. J. (1986) PhD thesis, Edinburgh, eqs. 2.10, 2.17-2.18.
     """
+    check_positive("radius", radius, "m")
+    check_positive("speed", speed, "rad/s")
+    check_slope_and_repose(slope, repose, field="repose")
     return (
         2.0 * np.asarray(speed) * np.asarray(radius) ** 3 * np.tan(slope) / (3.0 * np.sin(repose))
     )
@@ -156,10 +164,14 @@ def kramers_uniform_depth(q, radius, speed, slope, repose):
 def kramers_uniform_residence_time(length, q, radius, speed, slope, repose):
     r"""Mean residence time of a drum at uniform Kramers depth, :math:`L A(h_\infty)/q`, s.
 
+    At zero flow the limit :math:`L\sin\alpha/(\omega R\tan\psi)` (a thin bed: the particle time of
+    Saeman's outermost path) is returned, not 0/0.
+
     Parameters
     ----------
     length : float or array, m
-    q, radius, speed, slope, repose
+        Drum length, > 0.
+    q, radius, speed, slope, repose : float or array, m3/s, m, rad/s, rad, rad
         As in :func:`kramers_uniform_depth`.
 
     Returns
@@ -172,32 +184,94 @@ def kramers_uniform_residence_time(length, q, radius, speed, slope, repose):
     ...                                    np.radians(1), np.radians(35))
     >>> round(float(t / 60), 1)
     19.9
+
+    References
+    ----------
+    Kramers, H., Croockewit, P. (1952) Chem. Eng. Sci. 1, 259; Saeman, W. C. (1951) Chem. Eng.
+    Prog. 47, 508; Scott, W. J. (1986) PhD thesis, Edinburgh, eqs. 2.10, 2.17-2.18.
     """
+    check_positive("length", length, "m")
     h = kramers_uniform_depth(q, radius, speed, slope, repose)
     radius = np.asarray(radius, dtype=float)
+    q = np.asarray(q, dtype=float)
     theta = np.arccos(1.0 - h / radius)
-    return length * np.pi * radius**2 * fill_from_half_angle(theta) / np.asarray(q, dtype=float)
+    area = np.pi * radius**2 * fill_from_half_angle(theta)
+    thin = np.sin(repose) / (np.asarray(speed) * radius * np.tan(slope))  # lim A/q at q -> 0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        per_length = np.where(q > 0, area / q, thin)
+    return np.asarray(length) * per_length
 
 
 def kramers_dimensionless_flow(q, radius, speed, slope, repose):
     r"""Kramers & Croockewit's flow number :math:`N_q = q\sin\alpha/(\omega R^3\tan\psi)` (2.17).
 
+    Parameters
+    ----------
+    q : float or array, m3/s
+        Volumetric solids flow, >= 0.
+    radius : float or array, m
+        Drum inner radius, > 0.
+    speed : float or array, rad/s
+        Rotation rate, > 0.
+    slope : float or array, rad
+        Drum slope, > 0.
+    repose : float or array, rad
+        Dynamic angle of repose, in (0, pi/2) and above the slope.
+
+    Returns
+    -------
+    float or array, -
+
     Examples
     --------
     >>> round(float(kramers_dimensionless_flow(1e-5, 0.1, 1.0, 0.02, 0.7)), 4)
     0.3221
+
+    References
+    ----------
+    Kramers, H., Croockewit, P. (1952) Chem. Eng. Sci. 1, 259; Saeman, W. C. (1951) Chem. Eng.
+    Prog. 47, 508; Scott, W. J. (1986) PhD thesis, Edinburgh, eqs. 2.10, 2.17-2.18.
     """
+    check_nonnegative("q", q, "m3/s")
+    check_positive("radius", radius, "m")
+    check_positive("speed", speed, "rad/s")
+    check_positive("slope", slope, "rad")
+    check_slope_and_repose(slope, repose, field="repose")
     return q * np.sin(repose) / (speed * np.asarray(radius) ** 3 * np.tan(slope))
 
 
 def kramers_dimensionless_length(length, radius, slope, repose):
     r"""Kramers & Croockewit's length number :math:`N_L = R\cos\alpha/(L\tan\psi)` (2.18).
 
+    Parameters
+    ----------
+    length : float or array, m
+        Drum length, > 0.
+    radius : float or array, m
+        Drum inner radius, > 0.
+    slope : float or array, rad
+        Drum slope, > 0.
+    repose : float or array, rad
+        Dynamic angle of repose, in (0, pi/2) and above the slope.
+
+    Returns
+    -------
+    float or array, -
+
     Examples
     --------
     >>> round(float(kramers_dimensionless_length(1.78, 0.0985, np.radians(1), np.radians(40))), 3)
     2.429
+
+    References
+    ----------
+    Kramers, H., Croockewit, P. (1952) Chem. Eng. Sci. 1, 259; Saeman, W. C. (1951) Chem. Eng.
+    Prog. 47, 508; Scott, W. J. (1986) PhD thesis, Edinburgh, eqs. 2.10, 2.17-2.18.
     """
+    check_positive("length", length, "m")
+    check_positive("radius", radius, "m")
+    check_positive("slope", slope, "rad")
+    check_slope_and_repose(slope, repose, field="repose")
     return np.asarray(radius) * np.cos(repose) / (np.asarray(length) * np.tan(slope))
 
 
@@ -249,6 +323,11 @@ def kramers_profile(
     ...     speed=3 * np.pi / 30, slope=np.radians(1), repose=np.radians(35))
     >>> round(100 * float(p.fill[0]), 2), round(p.mean_residence_time / 60, 1)
     (4.75, 13.0)
+
+    References
+    ----------
+    Kramers, H., Croockewit, P. (1952) Chem. Eng. Sci. 1, 259; Saeman, W. C. (1951) Chem. Eng.
+    Prog. 47, 508; Scott, W. J. (1986) PhD thesis, Edinburgh, eqs. 2.10, 2.17-2.18.
     """
     check_positive("length", length, "m")
     check_positive("speed", speed, "rad/s")

@@ -9,12 +9,25 @@ from __future__ import annotations
 
 import numpy as np
 
+from rotarykiln.errors import check_nonnegative, check_positive, check_range
+
 __all__ = [
     "abouzeid_psi",
     "gilbert_flow_number",
     "karra_feed_number",
     "scott_psi",
 ]
+
+
+def _check(q, diameter, length=None, speed=None, repose=None):
+    check_nonnegative("q", q, "m3/s")
+    check_positive("diameter", diameter, "m")
+    if length is not None:
+        check_positive("length", length, "m")
+    if speed is not None:
+        check_positive("speed", speed, "rad/s")
+    if repose is not None:
+        check_range("repose", repose, 0.0, np.pi / 2, unit="rad")
 
 
 def _rev_per_s(omega):
@@ -52,6 +65,7 @@ def abouzeid_psi(q, length, diameter, speed, repose):
     Abouzeid, A.-Z. M. A., Fuerstenau, D. W. (1980) Ind. Eng. Chem. Proc. Des. Dev. 19, 201;
     Scott (1986) eq. 2.46, Fig. 5.14.
     """
+    _check(q, diameter, length, speed, repose)
     return (
         np.asarray(q, dtype=float)
         * np.asarray(length, dtype=float)
@@ -84,7 +98,13 @@ def scott_psi(q, length, diameter, speed, repose):
     >>> round(1000 * float(scott_psi(0.005 / 1780, 0.25, 0.1, 33.4 * np.pi / 30,
     ...                              np.radians(28))), 2)
     5.33
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh,
+    section 5.6 and eqs. 2.40-2.46.
     """
+    _check(q, diameter, length, speed, repose)
     d = np.asarray(diameter, dtype=float)
     return (
         np.asarray(q, dtype=float)
@@ -111,7 +131,14 @@ def gilbert_flow_number(q, diameter, speed):
     --------
     >>> round(float(gilbert_flow_number(1e-5, 0.1, 2 * np.pi)), 4)
     0.01
+
+    References
+    ----------
+    Gilbert (1932) [G1 of Scott], reviewed in Scott, W. J. (1986) The transport of solids in
+    rotating drums, PhD thesis, Edinburgh,
+    section 5.6 and eqs. 2.40-2.46.
     """
+    _check(q, diameter, speed=speed)
     return np.asarray(q, dtype=float) / (_rev_per_s(speed) * np.asarray(diameter, float) ** 3)
 
 
@@ -121,7 +148,11 @@ def karra_feed_number(q, diameter, g=9.81):
     Parameters
     ----------
     q : float or array, m3/s
+        Volumetric flow, >= 0.
     diameter : float or array, m
+        Drum inner diameter, > 0.
+    g : float, m/s2
+        Gravitational acceleration.
 
     Returns
     -------
@@ -131,6 +162,14 @@ def karra_feed_number(q, diameter, g=9.81):
     --------
     >>> round(float(karra_feed_number(1e-6, 0.08)), 6)
     0.000125
+
+    References
+    ----------
+    Karra & Fuerstenau (1978) [K2 of Scott], reviewed in Scott, W. J. (1986) The transport of
+    solids in rotating drums, PhD thesis, Edinburgh,
+    section 5.6 and eqs. 2.40-2.46.
     """
+    _check(q, diameter)
+    check_positive("g", g, "m/s2")
     d = np.asarray(diameter, dtype=float)
     return np.asarray(q, dtype=float) / (np.sqrt(g / (d / 2.0)) * d**3)

@@ -38,7 +38,13 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from rotarykiln.errors import InputError, OutOfRangeWarning, check_positive
+from rotarykiln.errors import (
+    InputError,
+    OutOfRangeWarning,
+    check_nonnegative,
+    check_positive,
+    check_range,
+)
 from rotarykiln.geometry import bed_area, fill_from_half_angle
 from rotarykiln.transport._common import (
     G,
@@ -79,11 +85,12 @@ def scott_friction_coefficient(law, alpha_d, alpha_s=None):
 
     Parameters
     ----------
-    law : str or float
+    law : str or float, -
+        Name of the law, or the value of :math:`\mu` itself (>= 0).
     alpha_d : float, rad
-        Dynamic angle of repose.
+        Dynamic angle of repose, in (0, pi/2).
     alpha_s : float, rad
-        Static angle of repose (needed for ``"static"``).
+        Static angle of repose, in (0, pi/2) (needed for ``"static"``).
 
     Returns
     -------
@@ -93,11 +100,15 @@ def scott_friction_coefficient(law, alpha_d, alpha_s=None):
     --------
     >>> round(scott_friction_coefficient("static", 0.5, np.radians(24.5)), 4)
     0.1302
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3.
     """
     if isinstance(law, int | float) and not isinstance(law, bool):
-        if law < 0:
-            raise InputError("friction", law, ">= 0")
+        check_nonnegative("friction", law)
         return float(law)
+    check_range("alpha_d", alpha_d, 0.0, np.pi / 2, unit="rad")
     if law == "zero":
         return 0.0
     if law == "dynamic":
@@ -105,6 +116,7 @@ def scott_friction_coefficient(law, alpha_d, alpha_s=None):
     if law == "static":
         if alpha_s is None:
             raise InputError("static_angle_of_repose", None, "given for the 'static' law")
+        check_range("alpha_s", alpha_s, 0.0, np.pi / 2, unit="rad")
         return float(np.tan(alpha_s) / 3.5)
     if law == "coulomb":
         return float(np.tan(alpha_d))
@@ -121,8 +133,11 @@ def bachmann_dynamic_angle(alpha_s, omega, radius):
     Parameters
     ----------
     alpha_s : float or array, rad
+        Static angle of repose, in (0, pi/2).
     omega : float or array, rad/s
+        Rotation rate, >= 0.
     radius : float or array, m
+        Drum inner radius, > 0.
 
     Returns
     -------
@@ -132,7 +147,15 @@ def bachmann_dynamic_angle(alpha_s, omega, radius):
     --------
     >>> round(float(np.degrees(bachmann_dynamic_angle(np.radians(35), 0.5 * 15.66, 0.04))), 2)
     63.65
+
+    References
+    ----------
+    Bachmann (1940), as given by Scott, W. J. (1986) The transport of solids in rotating drums, PhD
+    thesis, Edinburgh, ch. 3. (eq. 3.32)
     """
+    check_range("alpha_s", alpha_s, 0.0, np.pi / 2, unit="rad")
+    check_nonnegative("omega", omega, "rad/s")
+    check_positive("radius", radius, "m")
     return np.asarray(alpha_s, dtype=float) + np.asarray(omega, dtype=float) / critical_speed(
         radius
     )
@@ -145,9 +168,11 @@ def scott_cascade_time(chord, alpha_d, mu):
     Parameters
     ----------
     chord : float or array, m
-        Transverse cascade length :math:`c`.
+        Transverse cascade length :math:`c`, >= 0.
     alpha_d : float, rad
+        Dynamic angle of repose, in (0, pi/2).
     mu : float, -
+        Surface friction coefficient, in [0, tan(alpha_d)).
 
     Returns
     -------
@@ -157,11 +182,22 @@ def scott_cascade_time(chord, alpha_d, mu):
     --------
     >>> round(float(scott_cascade_time(0.05, np.radians(28), 0.1302)), 4)
     0.1696
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3.
     """
+    check_nonnegative("chord", chord, "m")
+    _check_angle_and_friction(alpha_d, mu)
     k = np.sin(alpha_d) - mu * np.cos(alpha_d)
-    if k <= 0:
-        raise InputError("friction", f"mu = {mu:.6g}", f"< tan(alpha_d) = {np.tan(alpha_d):.6g}")
     return np.sqrt(2.0 * np.asarray(chord, dtype=float) / (G * k))
+
+
+def _check_angle_and_friction(alpha_d, mu):
+    check_range("alpha_d", alpha_d, 0.0, np.pi / 2, unit="rad")
+    check_nonnegative("mu", mu)
+    if np.sin(alpha_d) - mu * np.cos(alpha_d) <= 0:
+        raise InputError("mu", f"{mu:.6g}", f"< tan(alpha_d) = {np.tan(alpha_d):.6g}")
 
 
 @dataclass(frozen=True)
@@ -254,12 +290,16 @@ def scott_flow_integral(b, r_up, omega, alpha_d, mu):
     Parameters
     ----------
     b : float or array, m
-        Distance from the drum axis to the bed surface, in [0, R].
+        Distance from the drum axis to the bed surface, in [-r_up, r_up] (negative beyond half
+        fill).
     r_up : float, m
-        Outer radius (drum radius, or the opening radius of a constriction, 3.40).
+        Outer radius (drum radius, or the opening radius of a constriction, 3.40), > 0.
     omega : float, rad/s
+        Rotation rate, > 0.
     alpha_d : float, rad
+        Dynamic angle of repose, in (0, pi/2).
     mu : float, -
+        Surface friction coefficient, in [0, tan(alpha_d)).
 
     Returns
     -------
@@ -272,7 +312,15 @@ def scott_flow_integral(b, r_up, omega, alpha_d, mu):
     >>> i = scott_flow_integral(0.03, 0.0465, 4.03, np.radians(28), 0.13)
     >>> round(float(i / ((0.0465**2 - 0.03**2) ** 1.5 / 6)), 3)
     0.667
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3.
     """
+    check_positive("r_up", r_up, "m")
+    check_range("b", np.asarray(b) / r_up, -1.0, 1.0, closed_low=True, closed_high=True)
+    check_positive("omega", omega, "rad/s")
+    _check_angle_and_friction(alpha_d, mu)
     p = ScottParameters(omega, alpha_d, alpha_d, 0.0, mu)
     return _capacity(b, r_up, p) / (4.0 * omega / np.tan(alpha_d))
 
@@ -292,10 +340,13 @@ def scott_surface_slope(theta, q, radius, params: ScottParameters):
     Parameters
     ----------
     theta : float or array, rad
-        Filling half-angle.
+        Filling half-angle, in [0, pi].
     q : float, m3/s
+        Volumetric flow, >= 0 (at zero flow the level-bed value :math:`-C` is returned).
     radius : float, m
+        Drum inner radius, > 0.
     params : ScottParameters
+        Operating constants.
 
     Returns
     -------
@@ -306,8 +357,17 @@ def scott_surface_slope(theta, q, radius, params: ScottParameters):
     >>> p = ScottParameters(4.03, np.radians(28), np.radians(24.5), 0.0, 0.1302)
     >>> round(float(scott_surface_slope(np.radians(60), 1.9e-6, 0.0465, p)), 4)
     0.0082
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3.
     """
+    check_range("theta", theta, 0.0, np.pi, closed_low=True, closed_high=True, unit="rad")
+    check_nonnegative("q", q, "m3/s")
+    check_positive("radius", radius, "m")
     b = radius * np.cos(theta)
+    if q == 0:  # q (1 + t^2) = phi (t + C) -> t = -C, the limit of the root below
+        return np.full(np.shape(b), -params.C)[()]
     return _tan_beta(_capacity(b, radius, params), q, params.C)
 
 
@@ -339,11 +399,13 @@ def scott_discharge_half_angle(q, radius, opening_radius, params: ScottParameter
     Parameters
     ----------
     q : float, m3/s
+        Volumetric flow, >= 0.
     radius : float, m
-        Drum radius.
+        Drum radius, > 0.
     opening_radius : float, m
-        Opening radius :math:`R_c` (= ``radius`` for an open end).
+        Opening radius :math:`R_c`, in (0, radius] (= ``radius`` for an open end).
     params : ScottParameters
+        Operating constants.
 
     Returns
     -------
@@ -362,7 +424,14 @@ def scott_discharge_half_angle(q, radius, opening_radius, params: ScottParameter
     >>> th = scott_discharge_half_angle(0.0, 0.0465, 0.037, p)
     >>> round(100 * float(fill_from_half_angle(th)), 2)
     5.37
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3.
     """
+    check_nonnegative("q", q, "m3/s")
+    check_positive("radius", radius, "m")
+    check_range("opening_radius", opening_radius, 0.0, radius, closed_high=True, unit="m")
     e = params.alpha_s - params.slope
     if e <= 0:
         raise InputError(
@@ -385,8 +454,11 @@ def scott_limiting_half_angle(q, radius, params: ScottParameters):
     Parameters
     ----------
     q : float, m3/s
+        Volumetric flow, >= 0.
     radius : float, m
+        Drum inner radius, > 0.
     params : ScottParameters
+        Operating constants.
 
     Returns
     -------
@@ -397,7 +469,13 @@ def scott_limiting_half_angle(q, radius, params: ScottParameters):
     >>> p = ScottParameters(3.61, np.radians(28), np.radians(24.5), np.radians(2), 0.1302)
     >>> round(100 * float(fill_from_half_angle(scott_limiting_half_angle(3e-6, 0.0465, p))), 2)
     6.29
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3.
     """
+    check_nonnegative("q", q, "m3/s")
+    check_positive("radius", radius, "m")
     C = params.C
     if C <= 0:
         return None
@@ -506,13 +584,14 @@ def scott_profile(
 
     Parameters
     ----------
-    feed : float
-        Mass flow in kg/s if ``density`` is given, else volumetric flow in m3/s.
+    feed : float, kg/s or m3/s
+        Mass flow in kg/s if ``density`` is given, else volumetric flow in m3/s; >= 0.
     length : float, m
+        Drum length, > 0.
     radius : float, m
-        Drum inner radius :math:`R_d`.
+        Drum inner radius :math:`R_d`, > 0.
     speed : float, rad/s
-        Angular speed :math:`\omega`.
+        Angular speed :math:`\omega`, > 0.
     slope : float, rad
         Drum inclination :math:`\psi`, down towards the discharge.
     dynamic_angle, static_angle : float, rad
@@ -526,8 +605,10 @@ def scott_profile(
     friction : str or float
         Surface friction law, see :func:`scott_friction_coefficient` (default ``"static"``).
     path : {"segregated", "fixed"}
+        Particle path model.
     cascade : {"rest", "initial_velocity", "none"}
-    hogg_b : float
+        Cascade-time model.
+    hogg_b : float, -
         Hogg's ratio B used with ``cascade="none"``.
     beyond_half : {"extend", "saturate"}
         What happens when the bed reaches half fill. ``"extend"`` (default) continues with the
