@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.errors import check_positive, warn_out_of_range
+from rotarykiln.errors import check_nonnegative, check_positive, warn_out_of_range
 from rotarykiln.heat._util import span
 
 __all__ = [
@@ -115,16 +115,19 @@ def li_covered_wall_h(
     gas_conductivity : float or array, W/(m K)
         Conductivity of the gas in the film (at the wall/bed temperature).
     particle_diameter : float or array, m
+        Mean particle size, > 0.
     bed_conductivity : float or array, W/(m K)
         Effective bed conductivity.
     rho_c : float or array, J/(m3 K)
         Bulk density times specific heat.
     omega : float or array, rad/s
+        Rotation rate.
     full_angle : float or array, rad
         Full bed central angle :math:`\Theta` (twice the geometry half-angle).
-    chi : float or array, optional
+    chi : float or array, optional, -
         Film thickness; default :func:`li_film_thickness` of ``particle_diameter``.
     check : bool
+        Validate the inputs.
 
     Returns
     -------
@@ -148,6 +151,8 @@ def li_covered_wall_h(
         chi = li_film_thickness(particle_diameter, check=check)
     if check:
         check_positive("gas_conductivity", gas_conductivity, "W/(m K)")
+        check_positive("particle_diameter", particle_diameter, "m")
+        check_nonnegative("chi", chi)
     h_pen = wachters_kramers_covered_wall_h(bed_conductivity, rho_c, omega, full_angle, check=check)
     return 1.0 / (np.asarray(chi) * particle_diameter / np.asarray(gas_conductivity) + 1.0 / h_pen)
 
@@ -192,6 +197,8 @@ def tscheng_covered_wall_h(bed_conductivity, rho_c, omega, radius, full_angle, *
         check_positive("bed_conductivity", bed_conductivity, "W/(m K)")
         check_positive("omega", omega, "rad/s")
         check_positive("full_angle", full_angle, "rad")
+        check_positive("rho_c", rho_c, "J/(m3 K)")
+        check_positive("radius", radius, "m")
     kb = np.asarray(bed_conductivity)
     alpha = kb / np.asarray(rho_c)
     arc = np.asarray(radius) * np.asarray(full_angle)

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.errors import check_positive, check_range, warn_out_of_range
+from rotarykiln.errors import check_nonnegative, check_positive, check_range, warn_out_of_range
 from rotarykiln.heat._util import span
 
 __all__ = [
@@ -37,10 +37,11 @@ def gas_reynolds(mass_flux, hydraulic_diameter, viscosity):
     Parameters
     ----------
     mass_flux : float or array, kg/(m2 s)
-        Gas mass flow divided by the freeboard area.
+        Gas mass flow divided by the freeboard area, >= 0.
     hydraulic_diameter : float or array, m
-        Freeboard hydraulic diameter :math:`D_e`.
+        Freeboard hydraulic diameter :math:`D_e`, > 0.
     viscosity : float or array, Pa s
+        Gas dynamic viscosity, > 0.
 
     Returns
     -------
@@ -50,7 +51,14 @@ def gas_reynolds(mass_flux, hydraulic_diameter, viscosity):
     --------
     >>> round(float(gas_reynolds(0.3, 0.15, 2.7e-5)), 0)
     1667.0
+
+    References
+    ----------
+    Definition; used with the closures of Tscheng & Watkinson (1979) and Gorog et al. (1982).
     """
+    check_nonnegative("mass_flux", mass_flux, "kg/(m2 s)")
+    check_positive("hydraulic_diameter", hydraulic_diameter, "m")
+    check_positive("viscosity", viscosity, "Pa s")
     return np.asarray(mass_flux) * np.asarray(hydraulic_diameter) / np.asarray(viscosity)
 
 
@@ -60,10 +68,13 @@ def rotational_reynolds(density, omega, hydraulic_diameter, viscosity):
     Parameters
     ----------
     density : float or array, kg/m3
+        Gas density, > 0.
     omega : float or array, rad/s
-        Kiln rotation rate (rad/s: rev/s would be 2 pi too small).
+        Kiln rotation rate, >= 0 (rad/s: rev/s would be 2 pi too small).
     hydraulic_diameter : float or array, m
+        Freeboard hydraulic diameter, > 0.
     viscosity : float or array, Pa s
+        Gas dynamic viscosity, > 0.
 
     Returns
     -------
@@ -73,7 +84,15 @@ def rotational_reynolds(density, omega, hydraulic_diameter, viscosity):
     --------
     >>> round(float(rotational_reynolds(0.7, 0.314, 0.15, 2.7e-5)), 0)
     183.0
+
+    References
+    ----------
+    S.H. Tscheng, A.P. Watkinson, Can. J. Chem. Eng. 57 (1979) 433-443 (definition).
     """
+    check_positive("density", density, "kg/m3")
+    check_nonnegative("omega", omega, "rad/s")
+    check_positive("hydraulic_diameter", hydraulic_diameter, "m")
+    check_positive("viscosity", viscosity, "Pa s")
     return (
         np.asarray(density)
         * np.asarray(omega)
@@ -204,6 +223,10 @@ def gorog_gas_wall_h(conductivity, hydraulic_diameter, reynolds, prandtl, length
     """
     if check:
         check_positive("length", length, "m")
+        check_positive("conductivity", conductivity, "W/(m K)")
+        check_positive("hydraulic_diameter", hydraulic_diameter, "m")
+        check_positive("reynolds", reynolds)
+        check_positive("prandtl", prandtl)
         warn_out_of_range("Re", span(reynolds), 1.0e4, 1.0e6, "Gorog et al. (1982) pipe-flow form")
     return (
         0.036
@@ -223,10 +246,11 @@ def gorog_gas_bed_h(mass_flux, *, exponent=0.62, check=True):
     Parameters
     ----------
     mass_flux : float or array, kg/(m2 s)
-        Gas mass flux (converted to kg/(m2 h) inside).
-    exponent : float
+        Gas mass flux (converted to kg/(m2 h) inside), > 0.
+    exponent : float, -
         0.62 (default, the form usually quoted) or 0.8 (as printed in seed 004).
     check : bool
+        Validate the inputs.
 
     Returns
     -------

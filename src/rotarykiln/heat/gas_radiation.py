@@ -15,7 +15,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
+from rotarykiln.errors import (
+    InputError,
+    check_nonnegative,
+    check_positive,
+    check_range,
+    warn_out_of_range,
+)
 from rotarykiln.heat._util import span
 
 __all__ = ["smith_wsgg_emissivity", "johansson_wsgg_emissivity", "gorog_mean_beam_length"]
@@ -141,6 +147,8 @@ def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=T
     R. Johansson, B. Leckner, K. Andersson, F. Johnsson, Combust. Flame 158 (2011) 893-901.
     """
     T = np.asarray(temperature, dtype=float)
+    if check:
+        check_nonnegative("path_length", path_length, "m")
     pw = np.asarray(p_h2o, dtype=float) / ATM
     pc = np.asarray(p_co2, dtype=float) / ATM
     ptot = pw + pc
@@ -173,9 +181,9 @@ def gorog_mean_beam_length(diameter, bed_depth):
     Parameters
     ----------
     diameter : float or array, m
-        Kiln inner diameter.
+        Kiln inner diameter, > 0.
     bed_depth : float or array, m
-        Bed depth at the middle of the chord.
+        Bed depth at the middle of the chord, in [0, D).
 
     Returns
     -------
@@ -190,5 +198,7 @@ def gorog_mean_beam_length(diameter, bed_depth):
     ----------
     J.P. Gorog, J.K. Brimacombe, T.N. Adams, Metall. Trans. B 12B (1981) 55-70, eq. 50.
     """
+    check_positive("diameter", diameter, "m")
     D = np.asarray(diameter, dtype=float)
+    check_range("bed_depth/diameter", np.asarray(bed_depth) / D, 0.0, 1.0, closed_low=True)
     return 0.95 * D * (1.0 - np.asarray(bed_depth, dtype=float) / D)

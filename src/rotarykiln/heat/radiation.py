@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.errors import check_range
+from rotarykiln.errors import check_nonnegative, check_positive, check_range
 
 __all__ = ["STEFAN_BOLTZMANN", "freeboard_radiation"]
 
@@ -81,6 +81,11 @@ def freeboard_radiation(
         check_range("eps_gas", eps_gas, 0.0, 1.0, closed_low=True)
         check_range("eps_wall", eps_wall, 0.0, 1.0, closed_high=True)
         check_range("eps_bed", eps_bed, 0.0, 1.0, closed_high=True)
+        check_positive("t_gas", t_gas, "K")
+        check_positive("t_wall", t_wall, "K")
+        check_positive("t_bed", t_bed, "K")
+        check_nonnegative("wall_area", wall_area, "m2/m")
+        check_nonnegative("bed_area", bed_area, "m2/m")
     s = STEFAN_BOLTZMANN
     Eg = s * np.asarray(t_gas, dtype=float) ** 4
     Ew = s * np.asarray(t_wall, dtype=float) ** 4
@@ -98,8 +103,12 @@ def freeboard_radiation(
     r1 = Gw * Ew + Ggw * Eg
     r2 = Gb * Eb + Ggb * Eg
     det = a11 * a22 - Gwb * Gwb
-    Jw = (r1 * a22 + Gwb * r2) / det
-    Jb = (a11 * r2 + Gwb * r1) / det
+    # A surface of zero area (an empty kiln has no bed chord, a full one no exposed wall)
+    # drops out of the network: its radiosity multiplies zero conductances only, and the
+    # other node exchanges with the gas alone (without this, det = 0 gives 0/0).
+    with np.errstate(invalid="ignore", divide="ignore"):
+        Jw = np.where(det > 0, (r1 * a22 + Gwb * r2) / det, r1 / np.where(a11 > 0, a11, 1.0))
+        Jb = np.where(det > 0, (a11 * r2 + Gwb * r1) / det, r2 / np.where(a22 > 0, a22, 1.0))
     # net absorbed = sum of inflows to the radiosity node except the surface one
     q_wall = Ggw * (Eg - Jw) + Gwb * (Jb - Jw)
     q_bed = Ggb * (Eg - Jb) + Gwb * (Jw - Jb)

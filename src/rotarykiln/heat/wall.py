@@ -37,7 +37,10 @@ def cylinder_layer_heat_flow(k_integral_inner, k_integral_outer, r_inner, r_oute
         Kirchhoff potential :math:`K(T) = \int k\,dT` at the inner and outer faces (see
         :meth:`rotarykiln.materials.lining.LiningMaterial.conductivity_integral`). For constant
         k this is :math:`kT`.
-    r_inner, r_outer : float or array, m
+    r_inner : float or array, m
+        Inner radius of the layer, > 0.
+    r_outer : float or array, m
+        Outer radius of the layer, > r_inner.
 
     Returns
     -------
@@ -47,7 +50,16 @@ def cylinder_layer_heat_flow(k_integral_inner, k_integral_outer, r_inner, r_oute
     --------
     >>> round(float(cylinder_layer_heat_flow(1.0 * 500, 1.0 * 400, 0.5, 0.6)), 1)
     3446.2
+
+    References
+    ----------
+    Steady radial conduction with the Kirchhoff transform, e.g. Incropera & DeWitt, Fundamentals of
+    Heat and Mass Transfer, ch. 3.
     """
+    check_range("k_integral_inner", k_integral_inner, -np.inf, np.inf, unit="W/m")
+    check_range("k_integral_outer", k_integral_outer, -np.inf, np.inf, unit="W/m")
+    check_positive("r_inner", r_inner, "m")
+    check_positive("r_outer - r_inner", np.asarray(r_outer) - np.asarray(r_inner), "m")
     return (
         2.0
         * np.pi
@@ -82,6 +94,8 @@ def churchill_chu_nusselt(rayleigh, prandtl):
     S.W. Churchill, H.H.S. Chu, Int. J. Heat Mass Transfer 18 (1975) 1049-1053; as in
     CalebBell/ht conv_free_immersed.py.
     """
+    check_nonnegative("rayleigh", rayleigh)
+    check_positive("prandtl", prandtl)
     ra = np.asarray(rayleigh, dtype=float)
     pr = np.asarray(prandtl, dtype=float)
     return (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
@@ -111,6 +125,8 @@ def churchill_bernstein_nusselt(reynolds, prandtl):
     ----------
     S.W. Churchill, M. Bernstein, J. Heat Transfer 99 (1977) 300-306.
     """
+    check_nonnegative("reynolds", reynolds)
+    check_positive("prandtl", prandtl)
     re = np.asarray(reynolds, dtype=float)
     pr = np.asarray(prandtl, dtype=float)
     return 0.3 + 0.62 * re**0.5 * pr ** (1 / 3) / (1 + (0.4 / pr) ** (2 / 3)) ** 0.25 * (
@@ -131,12 +147,15 @@ def shell_heat_loss(t_shell, t_ambient, outer_diameter, emissivity, air, wind_sp
     Parameters
     ----------
     t_shell, t_ambient : float or array, K
+        Shell and ambient temperatures, > 0.
     outer_diameter : float or array, m
+        Shell outer diameter, > 0.
     emissivity : float or array, -
         Shell surface emissivity in (0, 1].
     air : GasPropertyTable
         Air properties (:func:`rotarykiln.materials.gas.air_table`).
     wind_speed : float, m/s
+        Cross-wind speed, >= 0.
 
     Returns
     -------
@@ -147,10 +166,17 @@ def shell_heat_loss(t_shell, t_ambient, outer_diameter, emissivity, air, wind_sp
     >>> from rotarykiln.materials.gas import air_table
     >>> round(float(shell_heat_loss(400.0, 300.0, 0.5, 0.9, air_table())), -1)
     2310.0
+
+    References
+    ----------
+    S.W. Churchill, H.H.S. Chu, Int. J. Heat Mass Transfer 18 (1975) 1049-1053; S.W. Churchill,
+    M. Bernstein, J. Heat Transfer 99 (1977) 300-306; closures.md (shell loss).
     """
     check_range("shell.emissivity", emissivity, 0.0, 1.0, closed_high=True)
     check_nonnegative("shell.wind_speed", wind_speed, "m/s")
     check_positive("shell.outer_diameter", outer_diameter, "m")
+    check_positive("t_shell", t_shell, "K")
+    check_positive("t_ambient", t_ambient, "K")
     ts = np.asarray(t_shell, dtype=float)
     ta = np.asarray(t_ambient, dtype=float)
     tf = 0.5 * (ts + ta)

@@ -54,6 +54,12 @@ def as_axial_function(name: str, value) -> tuple[Callable[[np.ndarray], np.ndarr
 
 def check_slope_and_repose(slope, repose, field: str = "dynamic_angle_of_repose") -> None:
     """InputError unless 0 <= slope < angle of repose < 90 deg (all in rad)."""
+    if (
+        isinstance(slope, float | int)
+        and isinstance(repose, float | int)
+        and 0.0 <= slope < repose < np.pi / 2  # False for NaN: the slow path below reports it
+    ):
+        return
     slope = np.asarray(slope, dtype=float)
     repose = np.asarray(repose, dtype=float)
     if np.any(~np.isfinite(slope)) or np.any(slope < 0) or np.any(slope >= np.pi / 2):
