@@ -162,22 +162,27 @@ def open_open_cdf(t, tau, peclet):
 
     Parameters
     ----------
-    t : array_like
-        Time [s].
-    tau : float
-        Space time L/u [s].
-    peclet : float
-        Peclet number [-].
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
 
     Returns
     -------
-    numpy.ndarray
-        F(t) [-].
+    numpy.ndarray, -
+        F(t).
 
     Examples
     --------
     >>> round(float(open_open_cdf(1.0, 1.0, 100.0)), 4)
     0.4719
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eqs. 11-14.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     theta = t / tau
@@ -194,10 +199,27 @@ def open_open_moments(tau, peclet):
     r"""Mean [s] and variance [s2] of the open-open model: :math:`\tau(1+2/Pe)`,
     :math:`\tau^2(2/Pe + 8/Pe^2)` (seed 003 eqs. 12-13).
 
+    Parameters
+    ----------
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    (float, float), (s, s2)
+        Mean and variance of E(t).
+
     Examples
     --------
     >>> [round(v, 6) for v in open_open_moments(1.0, 100.0)]
     [1.02, 0.0208]
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eqs. 11-14.
     """
     check_positive("tau", tau, "s")
     check_positive("peclet", peclet)
@@ -377,6 +399,11 @@ def closed_closed_exit_age(t, tau, peclet, method="auto"):
     [0.89996, 0.69956]
     >>> round(float(closed_closed_exit_age(60.0, 60.0, 5.0, method="laplace")) * 60, 5)
     0.69956
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eq. 8.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     if method not in ("auto", "series", "laplace"):
@@ -398,10 +425,29 @@ def closed_closed_exit_age(t, tau, peclet, method="auto"):
 def closed_closed_cdf(t, tau, peclet):
     """Cumulative F(t) [-] of the closed-closed model (Laplace inversion of G_cc(s)/s).
 
+    Parameters
+    ----------
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    numpy.ndarray, -
+        F(t).
+
     Examples
     --------
     >>> round(float(closed_closed_cdf(1.0, 1.0, 1000.0)), 4)
     0.5089
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eq. 8.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     return np.clip(_invert(_log_g_closed_closed(pe), t / tau, pe, cumulative=True), 0.0, 1.0)
@@ -411,10 +457,27 @@ def closed_closed_moments(tau, peclet):
     r"""Mean [s] and variance [s2] of the closed-closed model: :math:`\tau`,
     :math:`\tau^2[2/Pe - 2(1 - e^{-Pe})/Pe^2]`.
 
+    Parameters
+    ----------
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    (float, float), (s, s2)
+        Mean and variance of E(t).
+
     Examples
     --------
     >>> [round(v, 6) for v in closed_closed_moments(1.0, 10.0)]
     [1.0, 0.180001]
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eq. 8.
     """
     check_positive("tau", tau, "s")
     check_positive("peclet", peclet)
@@ -449,6 +512,10 @@ def open_closed_exit_age(t, tau, peclet):
     --------
     >>> round(float(open_closed_exit_age(1.0, 1.0, 100.0)), 4)
     2.8348
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     return _invert(_log_g_open_closed(pe), t / tau, pe) / tau
@@ -457,10 +524,28 @@ def open_closed_exit_age(t, tau, peclet):
 def open_closed_cdf(t, tau, peclet):
     """Cumulative F(t) [-] of the open-closed model (Laplace inversion).
 
+    Parameters
+    ----------
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    numpy.ndarray, -
+        F(t).
+
     Examples
     --------
     >>> round(float(open_closed_cdf(1.0, 1.0, 100.0)), 4)
     0.4997
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     return np.clip(_invert(_log_g_open_closed(pe), t / tau, pe, cumulative=True), 0.0, 1.0)
@@ -470,10 +555,26 @@ def open_closed_moments(tau, peclet):
     r"""Mean [s] and variance [s2] of the open-closed model: :math:`\tau(1+1/Pe)`,
     :math:`\tau^2(2/Pe + 3/Pe^2)`.
 
+    Parameters
+    ----------
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    (float, float), (s, s2)
+        Mean and variance of E(t).
+
     Examples
     --------
     >>> [round(v, 6) for v in open_closed_moments(1.0, 100.0)]
     [1.01, 0.0203]
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     check_positive("tau", tau, "s")
     check_positive("peclet", peclet)
@@ -509,6 +610,11 @@ def gaussian_exit_age(t, tau, peclet):
     --------
     >>> round(float(gaussian_exit_age(1.0, 1.0, 100.0)), 4)
     2.8209
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eq. 10.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     theta = t / tau
@@ -518,10 +624,29 @@ def gaussian_exit_age(t, tau, peclet):
 def gaussian_cdf(t, tau, peclet):
     """Cumulative F(t) [-] of the Gaussian model.
 
+    Parameters
+    ----------
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    numpy.ndarray, -
+        F(t).
+
     Examples
     --------
     >>> round(float(gaussian_cdf(1.0, 1.0, 100.0)), 4)
     0.5
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eq. 10.
     """
     t, tau, pe = _prepare(t, tau, peclet)
     return 0.5 * special.erfc(-(t / tau - 1.0) * np.sqrt(pe) / 2.0)
@@ -530,10 +655,27 @@ def gaussian_cdf(t, tau, peclet):
 def gaussian_moments(tau, peclet):
     """Mean [s] and variance [s2] of the Gaussian model: tau and 2 tau^2/Pe.
 
+    Parameters
+    ----------
+    tau : float, s
+        Space time L/u.
+    peclet : float, -
+        Peclet number uL/D, > 0.
+
+    Returns
+    -------
+    (float, float), (s, s2)
+        Mean and variance of E(t).
+
     Examples
     --------
     >>> [round(v, 6) for v in gaussian_moments(1.0, 100.0)]
     [1.0, 0.02]
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. Bongo Njeng, A. S. et
+    al. (2015) Powder Technol. 269, 554-565, eq. 10.
     """
     check_positive("tau", tau, "s")
     check_positive("peclet", peclet)
@@ -568,6 +710,11 @@ def tanks_in_series_exit_age(t, tau, n_tanks):
     --------
     >>> round(float(tanks_in_series_exit_age(1.0, 1.0, 1.0)), 6)  # one tank: exp(-1)
     0.367879
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. ch. 14
+    (tanks-in-series model).
     """
     t, tau, n = _prepare(t, tau, n_tanks, "n_tanks")
     theta = t / tau
@@ -580,10 +727,29 @@ def tanks_in_series_exit_age(t, tau, n_tanks):
 def tanks_in_series_cdf(t, tau, n_tanks):
     """Cumulative F(t) [-] of the tanks-in-series model (regularised incomplete gamma).
 
+    Parameters
+    ----------
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    n_tanks : float, -
+        Number of tanks N > 0.
+
+    Returns
+    -------
+    numpy.ndarray, -
+        F(t).
+
     Examples
     --------
     >>> round(float(tanks_in_series_cdf(1.0, 1.0, 1.0)), 6)
     0.632121
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. ch. 14
+    (tanks-in-series model).
     """
     t, tau, n = _prepare(t, tau, n_tanks, "n_tanks")
     return special.gammainc(n, n * np.clip(t / tau, 0.0, None))
@@ -592,10 +758,27 @@ def tanks_in_series_cdf(t, tau, n_tanks):
 def tanks_in_series_moments(tau, n_tanks):
     """Mean [s] and variance [s2] of N tanks in series: tau and tau^2/N.
 
+    Parameters
+    ----------
+    tau : float, s
+        Space time L/u.
+    n_tanks : float, -
+        Number of tanks N > 0.
+
+    Returns
+    -------
+    (float, float), (s, s2)
+        Mean and variance of E(t).
+
     Examples
     --------
     >>> tanks_in_series_moments(2.0, 4.0)
     (2.0, 1.0)
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14. ch. 14
+    (tanks-in-series model).
     """
     check_positive("tau", tau, "s")
     check_positive("n_tanks", n_tanks)
@@ -609,10 +792,28 @@ def plug_flow_exit_age(t, tau, shape=None):
     """Plug flow: E(t) is a Dirac delta at t = tau; returned as 0 everywhere (its whole mass is
     the unit step of :func:`plug_flow_cdf`).
 
+    Parameters
+    ----------
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    shape : None
+        Unused (the common model interface).
+
+    Returns
+    -------
+    numpy.ndarray, 1/s
+        Zeros (the Dirac mass is not representable).
+
     Examples
     --------
     >>> plug_flow_exit_age([1.0, 2.0], 2.0).tolist()
     [0.0, 0.0]
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     t, tau, _ = _prepare(t, tau, None, "")
     return np.zeros_like(t)
@@ -621,10 +822,28 @@ def plug_flow_exit_age(t, tau, shape=None):
 def plug_flow_cdf(t, tau, shape=None):
     """Plug flow: F(t) = 0 for t < tau, 1 for t >= tau.
 
+    Parameters
+    ----------
+    t : array_like, s
+        Time since injection.
+    tau : float, s
+        Space time L/u.
+    shape : None
+        Unused (the common model interface).
+
+    Returns
+    -------
+    numpy.ndarray, -
+        F(t).
+
     Examples
     --------
     >>> plug_flow_cdf([1.0, 2.0, 3.0], 2.0).tolist()
     [0.0, 1.0, 1.0]
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     t, tau, _ = _prepare(t, tau, None, "")
     return np.where(t >= tau, 1.0, 0.0)
@@ -633,10 +852,26 @@ def plug_flow_cdf(t, tau, shape=None):
 def plug_flow_moments(tau, shape=None):
     """Mean tau [s] and variance 0 of plug flow.
 
+    Parameters
+    ----------
+    tau : float, s
+        Space time L/u.
+    shape : None
+        Unused (the common model interface).
+
+    Returns
+    -------
+    (float, float), (s, s2)
+        Mean and variance of E(t).
+
     Examples
     --------
     >>> plug_flow_moments(3.0)
     (3.0, 0.0)
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     check_positive("tau", tau, "s")
     return float(tau), 0.0
@@ -667,6 +902,10 @@ def dispersion_coefficient(peclet, length, tau):
     --------
     >>> f"{dispersion_coefficient(549.0, 1.95, 43.39 * 60):.3g}"
     '2.66e-06'
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eq. 9.
     """
     check_positive("peclet", peclet)
     check_positive("length", length, "m")
@@ -677,10 +916,28 @@ def dispersion_coefficient(peclet, length, tau):
 def peclet_number(velocity, length, dispersion):
     """Peclet number uL/D [-] from the axial velocity [m/s], length [m] and D [m2/s].
 
+    Parameters
+    ----------
+    velocity : float or array, m/s
+        Mean axial solids velocity, > 0.
+    length : float or array, m
+        Kiln length, > 0.
+    dispersion : float or array, m2/s
+        Axial dispersion coefficient, > 0.
+
+    Returns
+    -------
+    float or array, -
+        Pe = uL/D.
+
     Examples
     --------
     >>> round(peclet_number(7.49e-4, 1.95, 2.66e-6), 1)
     549.1
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eq. 9.
     """
     check_positive("velocity", velocity, "m/s")
     check_positive("length", length, "m")
