@@ -518,9 +518,21 @@ def freeboard_hydraulic_diameter(theta, radius):
 class CrossSection:
     """All the geometry of a partly filled cross-section (SI units), built from any one measure.
 
-    Attributes: ``radius`` (m), ``fill`` (-), ``theta`` (rad), ``depth`` (m), ``chord`` (m),
-    ``bed_area`` (m2), ``covered_wall_arc`` (m), ``exposed_wall_arc`` (m), ``freeboard_area`` (m2),
-    ``hydraulic_diameter`` (m). Arrays broadcast.
+    Build it with :meth:`from_fill`, :meth:`from_depth`, :meth:`from_half_angle` or
+    :meth:`from_chord` (they check their inputs). Arrays broadcast.
+
+    Parameters
+    ----------
+    radius : float or array, m
+        Drum inner radius, > 0.
+    theta : float or array, rad
+        Half-angle of the bed, in [0, pi].
+
+    Attributes
+    ----------
+    fill : -
+    depth, chord, covered_wall_arc, exposed_wall_arc, hydraulic_diameter : m
+    bed_area, freeboard_area : m2
 
     Examples
     --------

@@ -82,8 +82,8 @@ def ortiz_activation_rate(
         Steam mass flow :math:`Q_a`, kg/s (seed: 0.005 kg/s, taken constant).
     carbon_holdup : float or array
         Mass of reacting solid per kiln length :math:`m'_s = Q_s/V_s`, kg/m.
-    K_e : float
-        Rate constant, 1/kg.
+    K_e : float, 1/kg
+        Rate constant.
     T_act : float
         Activation temperature E/R, K.
     T_on, T_off : float

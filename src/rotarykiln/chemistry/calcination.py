@@ -84,6 +84,11 @@ def baker_equilibrium_temperature(p_co2):
     --------
     >>> round(baker_equilibrium_temperature(101325.0), 1)
     1173.6
+
+    References
+    ----------
+    E.H. Baker, The calcium oxide-carbon dioxide system in the pressure range 1-300 atmospheres, J.
+    Chem. Soc. (1962) 464-470.
     """
     p = np.asarray(p_co2, dtype=float)
     check_positive("calcination.p_co2", p, "Pa")
@@ -142,7 +147,7 @@ def luisser_calcination_rate(T, conversion, A=9.8e4, E=142000.0, order=0.5):
         Pre-exponential factor, 1/s.
     E : float
         Activation energy, J/mol.
-    order : float
+    order : float, -
         Reaction order in :math:`1 - x`.
 
     Returns

@@ -190,7 +190,7 @@ def integrate_plug_flow(
         ``bed_heat_input`` W/m), same types.
     n_points : int
         Output points along z.
-    rtol : float
+    rtol : float, -
         Relative tolerance of the ODE solver.
     method : str
         :func:`scipy.integrate.solve_ivp` method.
@@ -205,6 +205,11 @@ def integrate_plug_flow(
     >>> res = integrate_plug_flow(mech, {"CaCO3": 0.01}, 0.5, 0.01, 1100.0)   # 50 s at 1100 K
     >>> round(float(res.conversion("CaCO3")[-1]), 3)    # 1 - (1 - k t/2)^2, k = 0.0177 1/s
     0.69
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14 (plug flow); rate laws
+    as referenced by each :class:`~rotarykiln.chemistry.reaction.Reaction`.
     """
     sp = mechanism.species
     check_positive("plug_flow.length", length, "m")

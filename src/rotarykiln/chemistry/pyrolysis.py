@@ -130,6 +130,11 @@ def wen_yen_kerogen_rates(x1, x2, T):
     >>> d = wen_yen_kerogen_rates(1.0, 0.0, 723.0)
     >>> [round(float(v) * 60, 5) for v in d]    # per minute
     [-0.00515, 0.00515, 0.0, 0.0]
+
+    References
+    ----------
+    C.Y. Wen, T.F. Yen, Optimization of oil shale pyrolysis, Chem. Eng. Sci. 32 (1977) 346-349;
+    parameters of Carrasco & Banga (1997) (see :func:`wen_yen_rate_constants`).
     """
     k1, k2, k3, k4, k5 = wen_yen_rate_constants(T)
     x1 = np.asarray(x1, dtype=float)
@@ -206,13 +211,18 @@ def berkovich_conversion(T, T_low, decay_constant):
 
     Returns
     -------
-    ndarray
-        X in [0, 1).
+    ndarray, -
+        Conversion X in [0, 1).
 
     Examples
     --------
     >>> round(float(berkovich_conversion(793.0, 743.0, 21.71)), 3)   # kerogen, top of range
     0.9
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 9.1
+    (after Berkovich 1999).
     """
     check_positive("pyrolysis.decay_constant", decay_constant, "K")
     T = np.asarray(T, dtype=float)
@@ -240,6 +250,11 @@ def berkovich_reaction_enthalpy(T, table: ShaleTable | None = None):
     --------
     >>> round(float(berkovich_reaction_enthalpy(3000.0)) / 1000, 2)
     896.66
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 9.1
+    (after Berkovich 1999).
     """
     t = table or oil_shale_table()
     T = np.asarray(T, dtype=float)
@@ -255,10 +270,25 @@ def kerogen_reaction_heat(table: ShaleTable | None = None) -> float:
 
     Includes the clay reactions of the same temperature range (source note 1).
 
+    Parameters
+    ----------
+    table : ShaleTable, optional
+        Defaults to :func:`oil_shale_table`.
+
+    Returns
+    -------
+    float, J/kg
+        Per kg of kerogen.
+
     Examples
     --------
     >>> round(kerogen_reaction_heat() / 1000, 2)    # kJ/kg kerogen
     799.25
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 9.1
+    (after Berkovich 1999).
     """
     t = table or oil_shale_table()
     if "kerogen" not in t.material:
@@ -274,10 +304,25 @@ def oil_shale_feed_composition(table: ShaleTable | None = None) -> dict[str, flo
     pyrite, gypsum, siderite and dolomite are lumped as ``inert`` (their small reaction heats are
     not modelled as reactions; :func:`berkovich_reaction_enthalpy` has them all).
 
+    Parameters
+    ----------
+    table : ShaleTable, optional
+        Defaults to :func:`oil_shale_table`.
+
+    Returns
+    -------
+    dict of str to float, -
+        Mass fraction of each bed species (sums to 1).
+
     Examples
     --------
     >>> oil_shale_feed_composition()
     {'H2O(l)': 0.25, 'kerogen': 0.2, 'CaCO3': 0.06, 'inert': 0.49}
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 9.1
+    (after Berkovich 1999).
     """
     t = table or oil_shale_table()
     w = dict(zip(t.material, t.mass_fraction, strict=True))

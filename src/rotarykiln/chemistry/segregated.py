@@ -142,8 +142,12 @@ def segregated_average(
         X(t) for an array of times t (s), [-].
     rtd : (t, E) arrays, callable E(t) or object with ``exitage(t)``
         Residence time distribution, 1/s.
-    t, t_max, n :
-        Grid for a callable RTD (see :func:`rtd_arrays`).
+    t : array, optional, s
+        Time grid for a callable RTD (see :func:`rtd_arrays`).
+    t_max : float, optional, s
+        End of the default grid.
+    n : int
+        Points of the default grid.
 
     Returns
     -------
@@ -159,6 +163,11 @@ def segregated_average(
     ...                          t_max=3000.0, n=6001)
     >>> round(res.segregated, 3), round(res.plug, 3)
     (0.5, 0.632)
+
+    References
+    ----------
+    Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., segregated-flow model (ch.
+    15-16).
     """
     tt, E = rtd_arrays(rtd, t, t_max, n)
     X = np.asarray(conversion_of_time(tt), dtype=float)

@@ -233,6 +233,11 @@ def burn_fuel(
     50.0
     >>> round(b.adiabatic_temperature, -1)
     2180.0
+
+    References
+    ----------
+    D.G. Goodwin et al., Cantera 3 (https://cantera.org): equilibrium of the fuel-air mixture;
+    GRI-Mech 3.0 thermo.
     """
     import cantera as ct
 

@@ -129,6 +129,10 @@ def holdup_fraction(mass_flow, mean_residence_time, bulk_density, diameter, leng
     --------
     >>> round(float(holdup_fraction(2.5 / 3600, 43.34 * 60, 1422, 0.1013, 1.95)), 4)
     0.0808
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565.
     """
     check_positive("mass_flow", mass_flow, "kg/s")
     check_positive("mean_residence_time", mean_residence_time, "s")

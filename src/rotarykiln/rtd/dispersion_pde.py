@@ -171,6 +171,11 @@ def solve_dispersion_pde(
     >>> res = solve_dispersion_pde(10.0, dirac_inlet(), 6.0, cells_per_length=200, n_out=601)
     >>> round(float(np.trapezoid(res.outlet, res.theta)), 4)  # all the tracer leaves
     1.0
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eq. 8; Danckwerts, P. V. (1953)
+    Chem. Eng. Sci. 2, 1-13 (boundary conditions).
     """
     check_positive("peclet", peclet)
     check_positive("theta_end", theta_end)

@@ -67,6 +67,11 @@ def open_open_peclet_from_variance(sigma_theta2):
     --------
     >>> round(float(open_open_peclet_from_variance(6.91 / 43.39**2)), 1)
     548.9
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eq. 13; Levenspiel, O. (1999)
+    Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     check_positive("sigma_theta2", sigma_theta2)
     s = np.asarray(sigma_theta2, dtype=float)
@@ -147,6 +152,11 @@ def moment_method(
     >>> r = moment_method(43.39 * 60, 6.91 * 3600, length=1.95)
     >>> round(r.peclet), f"{r.dispersion:.3g}"
     (549, '2.66e-06')
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eqs. 7 and 12-13; Levenspiel, O.
+    (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     check_positive("mean", mean, "s")
     check_positive("variance", variance, "s2")

@@ -98,6 +98,10 @@ def lifter_cross_section(radius, height, repose_angle, *, arm=0.0, position=0.0)
     >>> s = lifter_cross_section(0.05065, 0.010, math.radians(39))
     >>> round(s * 1e6, 2)  # mm2
     38.89
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565.
     """
     check_positive("radius", radius, "m")
     check_range("height", height, 0.0, radius, unit="m")
@@ -176,6 +180,10 @@ def loading_lifter_area(n_lifters, lifter_area):
     --------
     >>> round(loading_lifter_area(4, 3.889e-5) * 1e6, 2)
     58.34
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eq. 19.
     """
     if int(n_lifters) != n_lifters or n_lifters < 1:
         raise InputError("n_lifters", n_lifters, "an integer >= 1")
@@ -203,6 +211,10 @@ def exit_dam_blocked_fraction(dam_height, radius):
     --------
     >>> round(float(exit_dam_blocked_fraction(0.0135, 0.1013 / 2)), 3)  # seed 003: "< 45 %" no effect
     0.462
+
+    References
+    ----------
+    Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565.
     """
     check_positive("radius", radius, "m")
     check_range("dam_height", dam_height, 0.0, radius, closed_low=True, closed_high=True, unit="m")

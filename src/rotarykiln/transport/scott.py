@@ -350,7 +350,9 @@ def scott_surface_slope(theta, q, radius, params: ScottParameters):
 
     Returns
     -------
-    float or array, -  (NaN where the bed cannot carry ``q`` at any slope)
+    float or array, -
+        :math:`\tan\beta`; NaN where the bed cannot carry ``q`` at any slope (a flag the
+        profile integration relies on).
 
     Examples
     --------

@@ -18,6 +18,8 @@ def dam_radius_from_height(height, drum_radius, field: str = "dam") -> float:
         Dam height above the drum wall, in [0, R).
     drum_radius : float, m
         Drum inner radius.
+    field : str
+        Name of the dam in error messages.
 
     Returns
     -------
@@ -33,6 +35,11 @@ def dam_radius_from_height(height, drum_radius, field: str = "dam") -> float:
     --------
     >>> round(dam_radius_from_height(0.0095, 0.0465), 6)
     0.037
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3
+    (dams and weirs).
     """
     check_positive("drum radius", drum_radius, "m")
     check_nonnegative(f"{field}.height", height, "m")
@@ -55,6 +62,16 @@ class Weir:
         Distance from the **discharge** end (Scott's x), in (0, L).
     radius : float, m
         Radius of the opening, in (0, R].
+
+    Examples
+    --------
+    >>> Weir(position=0.1, radius=0.037)
+    Weir(position=0.1, radius=0.037)
+
+    References
+    ----------
+    Scott, W. J. (1986) The transport of solids in rotating drums, PhD thesis, Edinburgh, ch. 3
+    (internal weirs).
     """
 
     position: float

@@ -113,6 +113,10 @@ def vanpuyvelde_bed_area(radius, fill):
     --------
     >>> round(float(vanpuyvelde_bed_area(0.285, 0.25)), 5)
     0.06379
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("radius", radius, "m")
     check_range("fill", fill, 0.0, 1.0)
@@ -139,6 +143,10 @@ def stagnant_layer_velocity(omega, radius):
     --------
     >>> round(float(stagnant_layer_velocity(1.0, 0.3)), 3)
     0.15
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 5.3.
     """
     check_positive("omega", omega, "rad/s")
     check_positive("radius", radius, "m")
@@ -217,6 +225,10 @@ def stagnant_residence_time(omega, fill):
     --------
     >>> round(float(stagnant_residence_time(9 / 60 * 2 * np.pi, 0.25)), 2)
     2.45
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("omega", omega, "rad/s")
     theta = half_angle_from_fill(fill)
@@ -247,6 +259,10 @@ def bed_revolution_period(omega, radius, fill, *, convention: str = "tables"):
     --------
     >>> round(float(bed_revolution_period(5 / 60 * 2 * np.pi, 3.0, 0.30)), 2)
     5.57
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     theta = half_angle_from_fill(fill)
     x = vanpuyvelde_active_layer_proportion(omega, fill)
@@ -283,6 +299,10 @@ def vanpuyvelde_apex_geometry(omega, fill):
     >>> ra, rb, ta = vanpuyvelde_apex_geometry(10 / 60 * 2 * np.pi, 0.25)
     >>> round(float(ra), 4), round(float(rb), 4), round(float(np.degrees(ta)), 2)
     (0.2611, 0.2997, 13.84)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 5.7-5.9.
     """
     check_positive("omega", omega, "rad/s")
     check_range("fill", fill, 0.0, 1.0)
@@ -324,6 +344,10 @@ def vanpuyvelde_centre_of_rotation(apex_a, apex_b, r_a, theta_a):
     >>> xo, yo = vanpuyvelde_centre_of_rotation((0.0, 0.0), (0.5, 0.0), 0.25, np.radians(10))
     >>> round(xo, 4), round(yo, 4)
     (0.2462, -0.0434)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 5.10.
     """
     (xa, ya), (xb, yb) = apex_a, apex_b
     check_positive("r_a", r_a, "m")
@@ -437,6 +461,10 @@ def active_layer(radius, omega, fill, *, convention: str = "tables") -> ActiveLa
     >>> al = active_layer(3.0, 5 / 60 * 2 * np.pi, 0.30)
     >>> round(float(al.x_al), 3), round(float(al.active_velocity), 2)
     (0.183, 7.01)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 5.1-5.6.
     """
     x = vanpuyvelde_active_layer_proportion(omega, fill)
     a_bed = vanpuyvelde_bed_area(radius, fill)

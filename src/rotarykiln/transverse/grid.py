@@ -226,6 +226,10 @@ def simulate_grid(
     >>> r = simulate_grid(g, [2.51e-3], mats, duration=90.0)
     >>> r.mass_error < 1e-12, round(r.final_contact / r.final_contact_bed, 2)
     (True, 1.0)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     d = np.atleast_1d(np.asarray(sizes, dtype=float))
     check_positive("sizes", d, "m")

@@ -172,6 +172,10 @@ def build_grid(
     >>> g = build_grid(0.285, 9 / 60 * 2 * np.pi, 0.25)
     >>> g.n_active, round(float(g.cv_area.sum() / g.active_area), 12)
     (22, 1.0)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("radius", radius, "m")
     check_positive("omega", omega, "rad/s")

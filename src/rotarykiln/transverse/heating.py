@@ -73,6 +73,11 @@ def air_properties(temperature, pressure: float = 101325.0):
     >>> k, nu, a, pr = air_properties(300.0)
     >>> round(float(k), 4), round(float(nu) * 1e6, 1), round(float(pr), 2)
     (0.0262, 15.7, 0.71)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, ch. 9 (air
+    properties for eqs 9.1-9.2).
     """
     t = np.asarray(temperature, dtype=float)
     check_positive("temperature", t, "K")
@@ -110,6 +115,12 @@ def thomas_sphere_nusselt(rayleigh, prandtl):
     --------
     >>> round(float(thomas_sphere_nusselt(0.0, 0.7)), 4)
     3.1329
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 9.2
+    (reconstructed as the Churchill-Chu form: Churchill, S. W., Chu, H. H. S. (1975) Int. J. Heat
+    Mass Transfer 18, 1049).
     """
     ra = np.asarray(rayleigh, dtype=float)
     if np.any(ra < 0):
@@ -140,6 +151,10 @@ def natural_convection_coefficient(d_p, t_particle, t_gas):
     --------
     >>> round(float(natural_convection_coefficient(2e-3, 1050.0, 800.0)), 1)
     91.1
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 9.1-9.2.
     """
     check_positive("d_p", d_p, "m")
     t_g = np.asarray(t_gas, dtype=float)
@@ -176,6 +191,10 @@ def radiation_to_shale(a_ash, t_ash_mean, a_shale_class, t_shale_class, extent, 
     >>> q = radiation_to_shale(1.0, 1000.0, np.array([0.5, 0.5]), np.array([500.0, 500.0]), 1.0)
     >>> round(float(q.sum()), 1)
     47843.8
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 9.5.
     """
     a_sh_cls = np.asarray(a_shale_class, dtype=float)
     a_sh = a_sh_cls.sum(axis=-1, keepdims=True)
@@ -245,6 +264,10 @@ def cell_heat_exchange(
     >>> q = cell_heat_exchange(m, cp, a, t, np.array([2e-3]), np.array([1.0]), 0.1)
     >>> round(float(q.sum()), 9), bool(q[0, 1, 0] > 0)
     (0.0, True)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     if balance not in ("pairwise", "smaller"):
         raise InputError("heating.balance", balance, "one of 'pairwise', 'smaller'")

@@ -82,6 +82,10 @@ def material_ratio(ratio):
     --------
     >>> float(material_ratio(0.5))
     2.0
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     r = np.asarray(ratio, dtype=float)
     if np.any(~np.isfinite(r) | (r <= 0)):
@@ -190,6 +194,10 @@ def vanpuyvelde_mixing_rate(v_al, a_al, d_p, ratio, *, k: float = K_RATE, **limi
     >>> a = vanpuyvelde_mixing_rate(0.792, 0.25 * 0.25 * np.pi * 0.285**2, 2.51e-3, 1.06)
     >>> round(float(a), 2)
     2.08
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 6.9.
     """
     return k * vanpuyvelde_active_layer_parameter(v_al, a_al, d_p, ratio, **limits)
 
@@ -231,6 +239,10 @@ def vanpuyvelde_final_contact_parameter(
     >>> om = vanpuyvelde_final_contact_parameter(0.25 * np.pi * 0.285**2, 2.51e-3, 1.06)
     >>> round(float(om) * 1e9, -3)  # Table 6.3: 815 327 mm3
     809000.0
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 6.10.
     """
     check_nonnegative("a_bed", a_bed, "m2")
     check_positive("d_p", d_p, "m")
@@ -267,6 +279,10 @@ def vanpuyvelde_final_contact(a_bed, d_p, ratio, *, k: float = K_FINAL, **limits
     --------
     >>> round(float(vanpuyvelde_final_contact(0.25 * np.pi * 0.285**2, 2.51e-3, 1.06)), 1)
     42.7
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 6.11.
     """
     return k * vanpuyvelde_final_contact_parameter(a_bed, d_p, ratio, **limits)
 
@@ -289,6 +305,10 @@ def mixing_time(final_contact, rate, initial_contact=0.0):
     --------
     >>> round(float(mixing_time(41.2, 1.656)), 1)
     24.9
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("rate", rate, "m/s")
     return (np.asarray(final_contact, dtype=float) - initial_contact) / np.asarray(rate)
@@ -312,6 +332,10 @@ def contact_distance(t, rate, final_contact, initial_contact=0.0):
     --------
     >>> contact_distance(np.array([0.0, 10.0, 100.0]), 2.0, 40.0).tolist()
     [0.0, 20.0, 40.0]
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 6.1, 8.1.
     """
     check_nonnegative("t", t, "s")
     return np.minimum(final_contact, initial_contact + rate * np.asarray(t, dtype=float))
@@ -386,6 +410,11 @@ def vanpuyvelde_mixing(
     >>> r = vanpuyvelde_mixing(0.285, 9 / 60 * 2 * np.pi, 0.25, 2.51e-3, 1.06)
     >>> round(r.rate, 2), round(r.final_contact, 1), round(r.mixing_time, 1)
     (2.09, 42.7, 20.5)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 5.2, 5.6,
+    6.8-6.11.
     """
     from rotarykiln.errors import warn_out_of_range
     from rotarykiln.transverse.active_layer import active_layer, warn_if_not_rolling

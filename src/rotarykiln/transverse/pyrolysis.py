@@ -64,6 +64,10 @@ def reaction_extent(temperature, t_low, tau):
     --------
     >>> round(float(reaction_extent(793.0, 743.0, 50 / np.log(10))), 3)
     0.9
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("tau", tau, "K")
     dt = np.maximum(np.asarray(temperature, dtype=float) - t_low, 0.0)
@@ -133,6 +137,11 @@ def berkovich_shale(cp: float = 1150.0) -> Thermochemistry:
     cp : float, J/(kg K)
         Sensible heat capacity (the thesis's Fig 9.1 values are lost).
 
+    Returns
+    -------
+    Thermochemistry
+        Enthalpy (J/kg) and reaction extent of the Table 9.1 shale.
+
     Examples
     --------
     >>> sh = berkovich_shale()
@@ -140,6 +149,11 @@ def berkovich_shale(cp: float = 1150.0) -> Thermochemistry:
     0.1999
     >>> round(float(sh.temperature(sh.enthalpy(760.0))), 3)
     760.0
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 9.1
+    (after Berkovich 1999).
     """
     return Thermochemistry("shale", cp, dict(TABLE_9_1), volatile_steps=("kerogen",))
 
@@ -147,9 +161,25 @@ def berkovich_shale(cp: float = 1150.0) -> Thermochemistry:
 def sensible_solid(name: str = "ash", cp: float = 1000.0) -> Thermochemistry:
     """A solid with sensible heat only (the recycled ash: its reactions are irreversible).
 
+    Parameters
+    ----------
+    name : str
+        Name of the solid.
+    cp : float, J/(kg K)
+        Heat capacity, > 0.
+
+    Returns
+    -------
+    Thermochemistry
+        Enthalpy :math:`c_p (T - 298.15)` J/kg, no reactions.
+
     Examples
     --------
     >>> round(float(sensible_solid().enthalpy(1298.15)), 1)
     1000000.0
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, ch. 9.
     """
     return Thermochemistry(name, cp, {}, ())

@@ -64,6 +64,10 @@ def tilted_distribution(mean_size: float, material: str = "shale") -> np.ndarray
     >>> w = tilted_distribution(1.54e-3, "shale")
     >>> round(float(w @ SIZE_CLASSES) * 1e3, 4)
     1.54
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 4.1.
     """
     check_positive("mean_size", mean_size, "m")
     base = _table_4_1(material)

@@ -109,6 +109,10 @@ def segregation_coefficients(psr, coefficients="backfit"):
     [-0.5, 1.59, 0.19, 0.77]
     >>> [round(float(c), 3) for c in segregation_coefficients(2.0)]
     [-0.491, 1.601, 0.188, 0.778]
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 7.3.
     """
     psr = np.asarray(psr, dtype=float)
     if np.any(~np.isfinite(psr) | (psr < 1.0)):
@@ -248,6 +252,10 @@ def vanpuyvelde_layer_mean_sizes(sizes, fractions, v_al, *, coefficients="backfi
     >>> r = vanpuyvelde_layer_mean_sizes([0.89e-3, 2.51e-3], [0.5, 0.5], 0.65)
     >>> round(r.inner_mean * 1e3, 2), round(r.outer_mean * 1e3, 2)
     (1.49, 1.77)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     d = np.asarray(sizes, dtype=float)
     w = np.asarray(fractions, dtype=float)

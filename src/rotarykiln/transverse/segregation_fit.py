@@ -68,6 +68,10 @@ def segregation_run_velocity(speed_rpm, fill):
 
     >>> round(float(segregation_run_velocity(2.90, 0.1531)), 3)
     0.356
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 5.2, 5.6.
     """
     w = np.asarray(speed_rpm, dtype=float) * 2 * np.pi / 60
     x = vanpuyvelde_active_layer_proportion(w, fill)
@@ -116,6 +120,10 @@ def backfit_segregation_coefficients(
     >>> c = backfit_segregation_coefficients(load_table("segregation_experiments"))
     >>> c[("inner", "i")]
     (1.0, 0.6146, 0.3718, 2.295)
+
+    References
+    ----------
+    Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, Table 7.3.
     """
     need = {"psr", "speed_rpm", "fill_fitted_percent", "p_in_pred", "p_out_pred"}
     if not need <= set(runs.columns):
