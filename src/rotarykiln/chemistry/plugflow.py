@@ -232,6 +232,9 @@ def integrate_plug_flow(
     check_positive("plug_flow.bed_mass_flow_in (total)", qtot, "kg/s")
     fTb = as_profile("plug_flow.T_bed", T_bed)
     fTg = fTb if T_gas is None else as_profile("plug_flow.T_gas", T_gas)
+    z_check = np.linspace(0.0, float(length), 11)
+    check_positive("plug_flow.T_bed", [float(fTb(z)) for z in z_check], "K")
+    check_positive("plug_flow.T_gas", [float(fTg(z)) for z in z_check], "K")
     fp = {
         k: as_profile(f"plug_flow.partial_pressure.{k}", v)
         for k, v in (partial_pressure or {}).items()

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from rotarykiln.errors import InputError, check_positive, warn_out_of_range
+from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
 
 __all__ = [
     "WEN_YEN_PARAMETERS",
@@ -136,6 +136,8 @@ def wen_yen_kerogen_rates(x1, x2, T):
     C.Y. Wen, T.F. Yen, Optimization of oil shale pyrolysis, Chem. Eng. Sci. 32 (1977) 346-349;
     parameters of Carrasco & Banga (1997) (see :func:`wen_yen_rate_constants`).
     """
+    check_nonnegative("x1", x1)
+    check_nonnegative("x2", x2)
     k1, k2, k3, k4, k5 = wen_yen_rate_constants(T)
     x1 = np.asarray(x1, dtype=float)
     x2 = np.asarray(x2, dtype=float)
@@ -225,6 +227,8 @@ def berkovich_conversion(T, T_low, decay_constant):
     (after Berkovich 1999).
     """
     check_positive("pyrolysis.decay_constant", decay_constant, "K")
+    check_positive("T", T, "K")
+    check_positive("T_low", T_low, "K")
     T = np.asarray(T, dtype=float)
     return np.where(T > T_low, 1.0 - np.exp(-(T - T_low) / decay_constant), 0.0)
 
@@ -257,6 +261,7 @@ def berkovich_reaction_enthalpy(T, table: ShaleTable | None = None):
     (after Berkovich 1999).
     """
     t = table or oil_shale_table()
+    check_positive("T", T, "K")
     T = np.asarray(T, dtype=float)
     h = np.zeros_like(T)
     for lo, tau, dh in zip(t.T_low, t.decay_constant, t.enthalpy, strict=True):

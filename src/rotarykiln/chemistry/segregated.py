@@ -65,6 +65,8 @@ def rtd_arrays(rtd, t=None, t_max=None, n: int = 400) -> tuple[np.ndarray, np.nd
             if t_max is None:
                 raise InputError("rtd.t_max", None, "given (or a time grid t) for a callable RTD")
             check_positive("rtd.t_max", t_max, "s")
+            if not isinstance(n, int | np.integer) or n < 2:
+                raise InputError("rtd.n", n, "an integer >= 2")
             t = np.linspace(0.0, float(t_max), int(n))
         tt = np.asarray(t, dtype=float)
         E = np.asarray(f(tt), dtype=float)

@@ -181,6 +181,10 @@ def solve_dispersion_pde(
     check_positive("theta_end", theta_end)
     if boundaries not in ("closed-closed", "open-open"):
         raise InputError("boundaries", boundaries, "closed-closed or open-open")
+    for name, value in (("cells_per_length", cells_per_length), ("n_out", n_out)):
+        if not isinstance(value, int | np.integer) or value < 2:
+            raise InputError(name, value, "an integer >= 2")
+    check_positive("rtol", rtol)
     if peclet / cells_per_length >= 2.0:
         raise InputError(
             "cells_per_length",

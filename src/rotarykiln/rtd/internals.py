@@ -185,7 +185,7 @@ def loading_lifter_area(n_lifters, lifter_area):
     ----------
     Bongo Njeng, A. S. et al. (2015) Powder Technol. 269, 554-565, eq. 19.
     """
-    if int(n_lifters) != n_lifters or n_lifters < 1:
+    if not np.isfinite(n_lifters) or int(n_lifters) != n_lifters or n_lifters < 1:
         raise InputError("n_lifters", n_lifters, "an integer >= 1")
     if not np.isfinite(lifter_area) or lifter_area < 0:
         raise InputError("lifter_area", f"{lifter_area} m2", ">= 0")

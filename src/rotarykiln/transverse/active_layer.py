@@ -350,7 +350,10 @@ def vanpuyvelde_centre_of_rotation(apex_a, apex_b, r_a, theta_a):
     Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 5.10.
     """
     (xa, ya), (xb, yb) = apex_a, apex_b
+    check_range("apex_a", (xa, ya), -np.inf, np.inf, unit="m")
+    check_range("apex_b", (xb, yb), -np.inf, np.inf, unit="m")
     check_positive("r_a", r_a, "m")
+    check_range("theta_a", theta_a, -np.pi, np.pi, closed_low=True, closed_high=True, unit="rad")
     th_ab = np.arctan2(yb - ya, xb - xa)
     ang = th_ab - theta_a
     return float(xa + r_a * np.cos(ang)), float(ya + r_a * np.sin(ang))

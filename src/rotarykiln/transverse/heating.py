@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.errors import InputError, check_positive
+from rotarykiln.errors import InputError, check_nonnegative, check_positive, check_range
 
 __all__ = [
     "STEFAN_BOLTZMANN",
@@ -122,9 +122,13 @@ def thomas_sphere_nusselt(rayleigh, prandtl):
     (reconstructed as the Churchill-Chu form: Churchill, S. W., Chu, H. H. S. (1975) Int. J. Heat
     Mass Transfer 18, 1049).
     """
+    check_nonnegative("rayleigh", rayleigh)
+    check_positive("prandtl", prandtl)
+    return _thomas_sphere_nusselt(rayleigh, prandtl)
+
+
+def _thomas_sphere_nusselt(rayleigh, prandtl):
     ra = np.asarray(rayleigh, dtype=float)
-    if np.any(ra < 0):
-        raise InputError("rayleigh", float(np.min(ra)), ">= 0")
     b = 1.17 / (1.0 + (0.5 / np.asarray(prandtl, dtype=float)) ** (9.0 / 16.0)) ** (8.0 / 27.0)
     return (1.77 + 0.331 * b * ra ** (1.0 / 6.0)) ** 2
 
@@ -157,11 +161,19 @@ def natural_convection_coefficient(d_p, t_particle, t_gas):
     Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 9.1-9.2.
     """
     check_positive("d_p", d_p, "m")
+    check_nonnegative("t_particle", t_particle, "K")
+    check_positive("t_gas", t_gas, "K")
+    return _natural_convection_coefficient(d_p, t_particle, t_gas)
+
+
+def _natural_convection_coefficient(d_p, t_particle, t_gas):
+    """:func:`natural_convection_coefficient` without the input checks (the grid's inner loop
+    calls it every time step with arrays it built itself)."""
     t_g = np.asarray(t_gas, dtype=float)
     k, nu, alpha, pr = air_properties(t_g)
     length = 0.5 * np.pi * np.asarray(d_p, dtype=float)
     ra = G / t_g * np.abs(np.asarray(t_particle, dtype=float) - t_g) * length**3 / (nu * alpha)
-    return thomas_sphere_nusselt(ra, pr) * k / length
+    return _thomas_sphere_nusselt(ra, pr) * k / length
 
 
 def radiation_to_shale(a_ash, t_ash_mean, a_shale_class, t_shale_class, extent, emissivity=0.9):
@@ -196,6 +208,17 @@ def radiation_to_shale(a_ash, t_ash_mean, a_shale_class, t_shale_class, extent, 
     ----------
     Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eq 9.5.
     """
+    check_nonnegative("a_ash", a_ash, "m2")
+    check_nonnegative("t_ash_mean", t_ash_mean, "K")
+    check_nonnegative("a_shale_class", a_shale_class, "m2")
+    check_nonnegative("t_shale_class", t_shale_class, "K")
+    check_range("extent", extent, 0.0, 1.0, closed_low=True, closed_high=True)
+    check_range("emissivity", emissivity, 0.0, 1.0, closed_high=True)
+    return _radiation_to_shale(a_ash, t_ash_mean, a_shale_class, t_shale_class, extent, emissivity)
+
+
+def _radiation_to_shale(a_ash, t_ash_mean, a_shale_class, t_shale_class, extent, emissivity):
+    """:func:`radiation_to_shale` without the input checks (inner loop of the grid)."""
     a_sh_cls = np.asarray(a_shale_class, dtype=float)
     a_sh = a_sh_cls.sum(axis=-1, keepdims=True)
     a_rad = np.minimum(np.asarray(a_ash, dtype=float)[..., None], a_sh)
@@ -271,11 +294,13 @@ def cell_heat_exchange(
     """
     if balance not in ("pairwise", "smaller"):
         raise InputError("heating.balance", balance, "one of 'pairwise', 'smaller'")
+    check_positive("dt", dt, "s")
+    check_range("emissivity", emissivity, 0.0, 1.0, closed_high=True)
     cap = mass * capacity  # J/K
     m_tot = mass.sum(axis=(1, 2))
     with np.errstate(invalid="ignore", divide="ignore"):
         t_mean = np.where(m_tot > 0, (mass * temperature).sum(axis=(1, 2)) / m_tot, 300.0)
-    h = natural_convection_coefficient(
+    h = _natural_convection_coefficient(
         d_p[None, None, :], temperature, np.maximum(t_mean, 200.0)[:, None, None]
     )
     g = _relax(h * area, cap, dt)
@@ -307,14 +332,14 @@ def cell_heat_exchange(
         # then k_i integrated exponentially over the step
         ta = t_ash[:, None]
         ti = temperature[:, 1, :]
-        q_unit = radiation_to_shale(a_ash, 1.0, area[:, 1, :], 0.0, extent, emissivity)
+        q_unit = _radiation_to_shale(a_ash, 1.0, area[:, 1, :], 0.0, extent, emissivity)
         k_rad = q_unit * (ta + ti) * (ta * ta + ti * ti)
         q_sh = _relax(k_rad, cap[:, 1, :], dt) * (ta - ti)
         if balance == "pairwise":
             safe = np.where(a_ash > 0, a_ash, 1.0)[:, None]
             q_ash = -q_sh.sum(axis=1)[:, None] * (area[:, 0, :] / safe)
         else:
-            q_ash = radiation_to_shale(
+            q_ash = _radiation_to_shale(
                 a_sh, t_sh, area[:, 0, :], temperature[:, 0, :], extent, emissivity
             )
             gain, loss = q_sh.sum(axis=1), -q_ash.sum(axis=1)

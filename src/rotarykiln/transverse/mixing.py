@@ -311,6 +311,8 @@ def mixing_time(final_contact, rate, initial_contact=0.0):
     Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("rate", rate, "m/s")
+    check_nonnegative("final_contact", final_contact, "m")
+    check_nonnegative("initial_contact", initial_contact, "m")
     return (np.asarray(final_contact, dtype=float) - initial_contact) / np.asarray(rate)
 
 
@@ -338,6 +340,9 @@ def contact_distance(t, rate, final_contact, initial_contact=0.0):
     Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS, eqs 6.1, 8.1.
     """
     check_nonnegative("t", t, "s")
+    check_nonnegative("rate", rate, "m/s")
+    check_nonnegative("final_contact", final_contact, "m")
+    check_nonnegative("initial_contact", initial_contact, "m")
     return np.minimum(final_contact, initial_contact + rate * np.asarray(t, dtype=float))
 
 

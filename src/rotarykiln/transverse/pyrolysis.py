@@ -70,6 +70,8 @@ def reaction_extent(temperature, t_low, tau):
     Van Puyvelde, D. R. (1999) Industrial Rotating Kiln Simulation, PhD thesis, UTS.
     """
     check_positive("tau", tau, "K")
+    check_positive("temperature", temperature, "K")
+    check_positive("t_low", t_low, "K")
     dt = np.maximum(np.asarray(temperature, dtype=float) - t_low, 0.0)
     return -np.expm1(-dt / tau)
 
