@@ -9,6 +9,7 @@
 
 from __future__ import annotations
 
+import math
 import warnings
 from typing import Any
 
@@ -83,20 +84,24 @@ def _fmt(value: Any) -> str:
 def _inside(value: Any, low: float, closed_low: bool, high: float, closed_high: bool) -> bool:
     """Fast path of the checks: True when every element is finite and inside the interval.
 
-    Two reductions (min and max, which propagate NaN) instead of boolean temporaries, so the
-    checks stay cheap on large arrays; False sends the caller to the slow path that finds the
-    offending element and raises.
+    Two reductions (min and max, which propagate NaN) instead of boolean temporaries, and no
+    numpy dispatch for Python scalars, so that the checks stay cheap in inner loops and on
+    large arrays; False sends the caller to the slow path that finds the offending element.
     """
-    if isinstance(value, float | int) and not isinstance(value, bool):
-        lo = hi = float(value)
+    if type(value) is float or type(value) is int:
+        lo = hi = value
     else:
-        arr = np.asarray(value, dtype=float)
+        arr = (
+            value
+            if type(value) is np.ndarray and value.dtype == np.float64
+            else np.asarray(value, dtype=float)
+        )
         if arr.size == 0:
             return True
-        lo, hi = float(np.min(arr)), float(np.max(arr))
+        lo, hi = arr.min(), arr.max()
     ok_low = lo >= low if closed_low else lo > low
     ok_high = hi <= high if closed_high else hi < high
-    return ok_low and ok_high and np.isfinite(lo) and np.isfinite(hi)
+    return bool(ok_low and ok_high) and math.isfinite(lo) and math.isfinite(hi)
 
 
 def check_positive(field: str, value: Any, unit: str = "") -> None:

@@ -31,7 +31,7 @@ __all__ = [
 _TW_SOURCE = "Tscheng & Watkinson (1979)"
 
 
-def gas_reynolds(mass_flux, hydraulic_diameter, viscosity):
+def gas_reynolds(mass_flux, hydraulic_diameter, viscosity, *, check=True):
     r"""Axial gas Reynolds number :math:`Re = G D_e/\mu_g`.
 
     Parameters
@@ -42,6 +42,8 @@ def gas_reynolds(mass_flux, hydraulic_diameter, viscosity):
         Freeboard hydraulic diameter :math:`D_e`, > 0.
     viscosity : float or array, Pa s
         Gas dynamic viscosity, > 0.
+    check : bool
+        Validate the inputs (the kiln's inner loop may pass False).
 
     Returns
     -------
@@ -56,13 +58,14 @@ def gas_reynolds(mass_flux, hydraulic_diameter, viscosity):
     ----------
     Definition; used with the closures of Tscheng & Watkinson (1979) and Gorog et al. (1982).
     """
-    check_nonnegative("mass_flux", mass_flux, "kg/(m2 s)")
-    check_positive("hydraulic_diameter", hydraulic_diameter, "m")
-    check_positive("viscosity", viscosity, "Pa s")
+    if check:
+        check_nonnegative("mass_flux", mass_flux, "kg/(m2 s)")
+        check_positive("hydraulic_diameter", hydraulic_diameter, "m")
+        check_positive("viscosity", viscosity, "Pa s")
     return np.asarray(mass_flux) * np.asarray(hydraulic_diameter) / np.asarray(viscosity)
 
 
-def rotational_reynolds(density, omega, hydraulic_diameter, viscosity):
+def rotational_reynolds(density, omega, hydraulic_diameter, viscosity, *, check=True):
     r"""Rotational Reynolds number :math:`Re_\omega = \rho_g \omega D_e^2/\mu_g`.
 
     Parameters
@@ -75,6 +78,8 @@ def rotational_reynolds(density, omega, hydraulic_diameter, viscosity):
         Freeboard hydraulic diameter, > 0.
     viscosity : float or array, Pa s
         Gas dynamic viscosity, > 0.
+    check : bool
+        Validate the inputs (the kiln's inner loop may pass False).
 
     Returns
     -------
@@ -89,10 +94,11 @@ def rotational_reynolds(density, omega, hydraulic_diameter, viscosity):
     ----------
     S.H. Tscheng, A.P. Watkinson, Can. J. Chem. Eng. 57 (1979) 433-443 (definition).
     """
-    check_positive("density", density, "kg/m3")
-    check_nonnegative("omega", omega, "rad/s")
-    check_positive("hydraulic_diameter", hydraulic_diameter, "m")
-    check_positive("viscosity", viscosity, "Pa s")
+    if check:
+        check_positive("density", density, "kg/m3")
+        check_nonnegative("omega", omega, "rad/s")
+        check_positive("hydraulic_diameter", hydraulic_diameter, "m")
+        check_positive("viscosity", viscosity, "Pa s")
     return (
         np.asarray(density)
         * np.asarray(omega)
