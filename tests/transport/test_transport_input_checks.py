@@ -290,3 +290,53 @@ def test_correlations_are_finite_for_valid_input(q, fill, radius, speed):
         scaleup.scott_psi(q, 1.0, 2 * radius, speed, repose),
     ]
     assert np.all(np.isfinite(values))
+
+
+def test_uniform_depth_rejects_a_nan_flow():
+    # ``np.any(q < 0)`` is False for NaN: the depth came back NaN
+    with pytest.raises(InputError, match="feed"):
+        kramers.kramers_uniform_depth(float("nan"), 0.2, 0.3, 1 * DEG, 35 * DEG)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    log_q=st.floats(-9.0, -4.0),
+    slope_deg=st.floats(0.0, 4.0),
+    radius=st.floats(0.03, 1.0),
+    frac_critical=st.floats(0.05, 0.45),
+    dam=st.booleans(),
+)
+def test_profiles_are_finite_or_refused(log_q, slope_deg, radius, frac_critical, dam):
+    # an open end starts at zero fill (h = 0): the profile and its times must stay finite,
+    # or the model must refuse the feed with InputError (no steady solution)
+    q = 10.0**log_q
+    speed = frac_critical * np.sqrt(9.81 / radius)
+    for model in ("kramers", "scott"):
+        try:
+            if model == "kramers":
+                prof = kramers.kramers_profile(
+                    q,
+                    length=2.0,
+                    radius=radius,
+                    speed=speed,
+                    slope=slope_deg * DEG,
+                    repose=35 * DEG,
+                    dam_height=0.3 * radius if dam else None,
+                    n_points=100,
+                )
+            else:
+                prof = scott.scott_profile(
+                    q,
+                    length=2.0,
+                    radius=radius,
+                    speed=speed,
+                    slope=slope_deg * DEG,
+                    dynamic_angle=35 * DEG,
+                    static_angle=32 * DEG,
+                    discharge_radius=0.7 * radius if dam else None,
+                    n_points=60,
+                )
+        except InputError:
+            continue
+        for values in (prof.depth, prof.fill, prof.residence_time, prof.mean_residence_time):
+            assert np.all(np.isfinite(values))

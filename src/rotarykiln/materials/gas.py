@@ -264,5 +264,15 @@ def burn_fuel(
     m = fuel_flow + air_flow
     q = m * (h_reactants - h_products)
     target = float(table.enthalpy(t_in)) + q / m
-    t_ad = float(brentq(lambda t: float(table.enthalpy(t)) - target, t_in, 2 * T_MAX))
+    # bracket from T_MIN, not t_in: a very lean mixture releases a hair less than nothing
+    # (equilibrium NO at 1200 K is endothermic) and its products sit just below t_in
+    lo, hi = T_MIN, 2 * T_MAX
+    if float(table.enthalpy(lo)) > target or float(table.enthalpy(hi)) < target:
+        raise InputError(
+            "air_flow",
+            f"{air_flow:.6g} kg/s",
+            f"enough to burn {fuel_flow:.6g} kg/s of fuel (air/fuel mass ratio "
+            f"{air_flow / fuel_flow:.4g}: the products would leave outside [{lo:g}, {hi:g}] K)",
+        )
+    t_ad = float(brentq(lambda t: float(table.enthalpy(t)) - target, lo, hi))
     return BurntGas(comp, m, t_in, t_ad, q, table)

@@ -145,8 +145,7 @@ def kramers_uniform_depth(q, radius, speed, slope, repose):
     check_slope_and_repose(slope, repose)
     if np.any(np.asarray(slope) <= 0):
         raise InputError("slope", 0.0, "> 0 for a uniform depth (a horizontal drum has none)")
-    if np.any(q < 0):
-        raise InputError("feed", float(np.min(q)), ">= 0")
+    check_nonnegative("feed", q, "m3/s")  # also NaN, which ``q < 0`` let through
     k, c = _kc(q, radius, speed, slope, repose)
     ratio = k / c
     if np.any(ratio > 1.0):
