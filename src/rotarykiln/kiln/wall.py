@@ -25,7 +25,35 @@ from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
 from rotarykiln.materials.gas import GasPropertyTable, air_table
 from rotarykiln.materials.lining import Layer
 
-__all__ = ["LinedWall", "ConstantUWall"]
+__all__ = ["LinedWall", "ConstantUWall", "layers_from_case"]
+
+
+def layers_from_case(lining, section: str = "heat") -> tuple[Layer, ...]:
+    """Lining layers of a case file's ``lining`` list (:class:`rotarykiln.case.LiningLayer`).
+
+    Raises :class:`~rotarykiln.errors.InputError` (``<section>.lining``) for an empty list.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import LiningLayer
+    >>> (layer,) = layers_from_case([LiningLayer(material="fireclay_brick", thickness="0.1 m")])
+    >>> layer.material.name, layer.thickness
+    ('fireclay_brick', 0.1)
+    """
+    from rotarykiln.errors import InputError
+    from rotarykiln.materials.lining import load_lining_material
+
+    layers = tuple(
+        Layer(
+            load_lining_material(layer.material),
+            layer.thickness,
+            absent=tuple(tuple(a) for a in layer.absent),
+        )
+        for layer in lining or ()
+    )
+    if not layers:
+        raise InputError(f"{section}.lining", "[]", "a list of at least one layer")
+    return layers
 
 
 @dataclass(frozen=True)
