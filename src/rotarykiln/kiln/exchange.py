@@ -21,7 +21,6 @@ gas-bed convection (``tscheng1979``, ``gorog1982``), covered wall (``li2005``,
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -50,7 +49,15 @@ from rotarykiln.heat.radiation import freeboard_radiation
 from rotarykiln.kiln.model import Closures
 from rotarykiln.materials.gas import GasPropertyTable
 
-__all__ = ["FreeboardGas", "TableGas", "CrossSectionExchange", "FLOW_KEYS", "EPS_GAS_MAX"]
+__all__ = [
+    "FreeboardGas",
+    "TableGas",
+    "BulkBed",
+    "CrossSectionExchange",
+    "cell_report",
+    "FLOW_KEYS",
+    "EPS_GAS_MAX",
+]
 
 #: Keys of the heat flows (W/m) returned by :meth:`CrossSectionExchange.flows`.
 FLOW_KEYS = (
@@ -121,19 +128,48 @@ class TableGas:
 
 
 @dataclass(frozen=True)
+class BulkBed:
+    """A bed of constant properties (the reacting kiln's), read like a
+    :class:`~rotarykiln.materials.solids.Solid` by :class:`CrossSectionExchange`.
+
+    ``bulk_density`` (kg/m3), ``specific_heat`` (J/(kg K)), ``particle_diameter`` (m),
+    ``emissivity`` (-), ``bed_conductivity`` (W/(m K), the given bulk value). Without a solid
+    conductivity and void fraction only the ``given`` bed-conductivity closure applies.
+
+    Examples
+    --------
+    >>> BulkBed(1680.0, 1040.0, 5e-3, 0.95, 0.69).cp(1000.0)
+    1040.0
+    """
+
+    bulk_density: float
+    specific_heat: float
+    particle_diameter: float
+    emissivity: float
+    bed_conductivity: float
+    solid_conductivity = None
+    void_fraction = None
+
+    def cp(self, T):
+        """Specific heat, J/(kg K) (constant)."""
+        return self.specific_heat
+
+
+@dataclass(frozen=True)
 class CrossSectionExchange:
     """Heat flows per metre between gas, exposed wall, bed and covered wall of every cell.
 
-    The constant parts, built once per solve. ``closures``
+    The constant parts, built once per solve (:meth:`of` a kiln). ``closures``
     (:class:`~rotarykiln.kiln.model.Closures`); ``geometry``: the cell geometry
     (:class:`~rotarykiln.kiln.discretisation.Grid`: ``fill``, ``full_angle``, ``chord``,
     ``exposed_wall``, ``covered_wall``, ``hydraulic_diameter``, ``beam_length``; arrays over
-    cells); ``length``, ``radius`` (m), ``omega`` (rad/s); ``eps_wall``, ``eps_bed`` (-);
-    bed: ``bulk_density`` (kg/m3), ``bed_cp`` (callable T_bed -> J/(kg K)),
-    ``particle_diameter`` (m), ``bed_conductivity`` (W/(m K), the given bulk value or None),
-    ``solid_conductivity`` (W/(m K)) and ``void_fraction`` (-) for the bed-conductivity models;
-    ``emissivity_law`` (a, b 1/K, min) for :math:`\\varepsilon_g = \\max(a + bT, min)`, which
-    replaces the closure's gas emissivity when given.
+    cells); ``length``, ``radius`` (m), ``omega`` (rad/s); ``eps_wall`` (-); ``bed``: a
+    :class:`~rotarykiln.materials.solids.Solid` or a :class:`BulkBed` (``emissivity``,
+    ``bulk_density`` kg/m3, ``cp(T)`` J/(kg K), ``particle_diameter`` m, ``bed_conductivity``
+    W/(m K) or None, ``solid_conductivity`` W/(m K) and ``void_fraction`` for the
+    bed-conductivity models); ``emissivity_law`` (a, b 1/K, min) for
+    :math:`\\varepsilon_g = \\max(a + bT, min)`, which replaces the closure's gas emissivity when
+    given.
 
     Examples
     --------
@@ -141,8 +177,8 @@ class CrossSectionExchange:
     >>> from rotarykiln.materials.gas import air_table
     >>> g = cell_grid(2.0, 0.1, 4, lambda z: np.full_like(z, 0.15))
     >>> c = Closures(gas_bed="gorog1982", radiation=False)
-    >>> ex = CrossSectionExchange(c, g, 2.0, 0.1, 0.16, 0.9, 0.9, 1650.0,
-    ...                           lambda t: 800.0, 7e-4, 0.27)
+    >>> ex = CrossSectionExchange(c, g, 2.0, 0.1, 0.16, 0.9,
+    ...                           BulkBed(1650.0, 800.0, 7e-4, 0.9, 0.27))
     >>> t = np.full(4, 500.0)
     >>> q, co = ex.flows(TableGas(air_table(), 101325.0, 1.0), t, t - 100.0, t - 50.0)
     >>> round(float(co["h_gb"][0]), 2)  # Gorog: 0.4 (3600 kg/(m2 h))^0.62
@@ -157,21 +193,29 @@ class CrossSectionExchange:
     radius: float
     omega: float
     eps_wall: float
-    eps_bed: float
-    bulk_density: float
-    bed_cp: Callable
-    particle_diameter: float
-    bed_conductivity: float | None = None
-    solid_conductivity: float | None = None
-    void_fraction: float | None = None
+    bed: object
     emissivity_law: tuple[float, float, float] | None = None
 
+    @classmethod
+    def of(cls, kiln, grid, bed, emissivity_law=None) -> CrossSectionExchange:
+        """For a kiln model with ``closures``, ``length``, ``radius``, ``omega``, ``eps_wall``."""
+        return cls(
+            kiln.closures,
+            grid,
+            kiln.length,
+            kiln.radius,
+            kiln.omega,
+            kiln.eps_wall,
+            bed,
+            emissivity_law,
+        )
+
     def __post_init__(self):
-        c = self.closures
+        c, b = self.closures, self.bed
         if not isinstance(c, Closures):
             raise InputError("closures", c, "a Closures object")
-        modelled = c.bed_conductivity != "given" or self.bed_conductivity is None
-        if modelled and (self.solid_conductivity is None or self.void_fraction is None):
+        modelled = c.bed_conductivity != "given" or b.bed_conductivity is None
+        if modelled and (b.solid_conductivity is None or b.void_fraction is None):
             raise InputError(
                 "closures.bed_conductivity",
                 c.bed_conductivity,
@@ -181,15 +225,15 @@ class CrossSectionExchange:
 
     def bed_conductivity_at(self, gas: FreeboardGas, t_film):
         """Bed thermal conductivity (W/(m K)) by the ``bed_conductivity`` closure."""
-        c = self.closures.bed_conductivity
-        if c == "given" and self.bed_conductivity is not None:
-            return self.bed_conductivity
+        c, b = self.closures.bed_conductivity, self.bed
+        if c == "given" and b.bed_conductivity is not None:
+            return b.bed_conductivity
         if c == "maxwell":
             return maxwell_bed_conductivity(
-                gas.conductivity(t_film), self.solid_conductivity, 1.0 - self.void_fraction
+                gas.conductivity(t_film), b.solid_conductivity, 1.0 - b.void_fraction
             )
         return zehner_schlunder_bed_conductivity(
-            gas.conductivity(t_film), self.solid_conductivity, self.void_fraction
+            gas.conductivity(t_film), b.solid_conductivity, b.void_fraction
         )
 
     def gas_emissivity(self, gas: FreeboardGas, t_gas, check=False):
@@ -238,11 +282,11 @@ class CrossSectionExchange:
             h_gb = gorog_gas_bed_h(gas.mass_flux, check=check) * np.ones_like(tg)
         t_film = 0.5 * (tw + tb)
         kb = self.bed_conductivity_at(gas, t_film)
-        rho_c = self.bulk_density * self.bed_cp(tb)
+        rho_c = self.bed.bulk_density * self.bed.cp(tb)
         if c.covered_wall == "li2005":
             h_cw = li_covered_wall_h(
                 gas.conductivity(t_film),
-                self.particle_diameter,
+                self.bed.particle_diameter,
                 kb,
                 rho_c,
                 self.omega,
@@ -285,7 +329,7 @@ class CrossSectionExchange:
                 tb,
                 co["eps_gas"],
                 self.eps_wall,
-                self.eps_bed,
+                self.bed.emissivity,
                 g.exposed_wall,
                 g.chord,
                 check=False,
@@ -296,3 +340,17 @@ class CrossSectionExchange:
             q_rw = q_rb = 0.0 * tg
         flows = dict(zip(FLOW_KEYS, (q_gw, q_gb, q_cw, q_rw, q_rb), strict=True))
         return flows, co
+
+
+def cell_report(t_bed, t_gas, flows: dict, q_loss, coefficients: dict, **sources) -> dict:
+    """The per-cell dict a kiln residual reports: cell-mean temperatures (``t_bed_mean``,
+    ``t_gas_mean``, K), the exchange ``flows`` and the shell loss ``q_shell_loss`` (W/m), the
+    model's own ``sources`` (W/m), then the ``coefficients``."""
+    return {
+        "t_bed_mean": t_bed,
+        "t_gas_mean": t_gas,
+        **flows,
+        "q_shell_loss": q_loss,
+        **sources,
+        **coefficients,
+    }

@@ -38,7 +38,7 @@ import numpy as np
 
 from rotarykiln.chemistry.mechanism import CellState as ChemState
 from rotarykiln.kiln.discretisation import cell_grid
-from rotarykiln.kiln.exchange import FLOW_KEYS, CrossSectionExchange
+from rotarykiln.kiln.exchange import FLOW_KEYS, BulkBed, CrossSectionExchange, cell_report
 from rotarykiln.kiln.gas_mixture import GasMixture, MixtureGas
 from rotarykiln.kiln.reacting_model import ReactingKiln
 from rotarykiln.kiln.residual import T_FLOOR
@@ -102,29 +102,20 @@ class ReactingResidual:
         )
         self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
         if k.layers:
-            self.wall = LinedWall(
-                k.layers, g.radii, k.eps_shell, k.ambient_temperature, k.wind_speed
-            )
+            self.wall = LinedWall.of(k, g)
         else:
             self.wall = ConstantUWall(k.wall_loss_u, 2.0 * np.pi * k.radius, k.ambient_temperature)
         self.n_wall = self.wall.n_temperatures
         self.i_species = 2 + self.n_wall  # first species unknown
         self.nv = self.i_species + self.nb + self.ng
-        cp_mean = float(np.mean(self.cp_bed))
-        self.exchange = CrossSectionExchange(
-            closures=k.closures,
-            geometry=g,
-            length=k.length,
-            radius=k.radius,
-            omega=k.omega,
-            eps_wall=k.eps_wall,
-            eps_bed=k.bed_emissivity,
-            bulk_density=k.bulk_density,
-            bed_cp=lambda tb: cp_mean,
-            particle_diameter=k.particle_diameter,
-            bed_conductivity=k.bed_conductivity,
-            emissivity_law=k.gas_emissivity_law,
+        bed = BulkBed(
+            k.bulk_density,
+            float(np.mean(self.cp_bed)),
+            k.particle_diameter,
+            k.bed_emissivity,
+            k.bed_conductivity,
         )
+        self.exchange = CrossSectionExchange.of(k, g, bed, k.gas_emissivity_law)
         self.reaction_scale = 1.0  # continuation parameter on the reaction rates
         self.radiation_scale = 1.0  # continuation parameter on radiation
         self.q_ref = 1.0
@@ -233,16 +224,12 @@ class ReactingResidual:
         R = np.concatenate(parts, axis=-1)
         if not full:
             return R
-        fluxes = {
-            "t_bed_mean": tb,
-            "t_gas_mean": tg,
-            **fl,
-            "q_shell_loss": q_loss,
+        chemistry = {
             "q_reaction_absorbed": heat,
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
-            **co,
         }
+        fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
         return R, fluxes, prod, rate, (tb_n, tg_n, qb, qg)
 
     def __call__(self, x):

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from rotarykiln.kiln.discretisation import Grid
-from rotarykiln.kiln.exchange import FLOW_KEYS, CrossSectionExchange, TableGas
+from rotarykiln.kiln.exchange import FLOW_KEYS, CrossSectionExchange, TableGas, cell_report
 from rotarykiln.kiln.model import HeatKiln
 from rotarykiln.kiln.sources import CellState, SourceTerms
 from rotarykiln.kiln.wall import LinedWall
@@ -34,29 +34,8 @@ class HeatResidual:
         self.n_extra = int(getattr(sources, "n_extra", 0)) if sources is not None else 0
         self.nv = 3 + self.n_layers + self.n_extra
         self.homotopy = 1.0  # scales radiation and heat release (continuation)
-        s = kiln.solid
-        self.exchange = CrossSectionExchange(
-            closures=kiln.closures,
-            geometry=grid,
-            length=kiln.length,
-            radius=kiln.radius,
-            omega=kiln.omega,
-            eps_wall=kiln.eps_wall,
-            eps_bed=s.emissivity,
-            bulk_density=s.bulk_density,
-            bed_cp=s.cp,
-            particle_diameter=s.particle_diameter,
-            bed_conductivity=s.bed_conductivity,
-            solid_conductivity=s.solid_conductivity,
-            void_fraction=s.void_fraction,
-        )
-        self.wall = LinedWall(
-            kiln.layers,
-            grid.radii,
-            kiln.eps_shell,
-            kiln.ambient_temperature,
-            kiln.wind_speed,
-        )
+        self.exchange = CrossSectionExchange.of(kiln, grid, kiln.solid)
+        self.wall = LinedWall.of(kiln, grid)
         self.gas = TableGas(kiln.gas, kiln.pressure, kiln.gas_flow / grid.freeboard_area)
 
     def unpack(self, x):
@@ -132,16 +111,11 @@ class HeatResidual:
             R = np.concatenate([R, np.asarray(extra_res) * self.extra_scale], axis=-1)
         if not full:
             return R
-        fluxes = {
-            "t_bed_mean": tb,
-            "t_gas_mean": tg,
-            **fl,
-            "q_shell_loss": q_loss,
+        sources = {
             "q_source_bed": np.broadcast_to(s_bed, tg.shape) * 1.0,
             "q_source_gas": np.broadcast_to(s_gas, tg.shape) * 1.0,
-            **co,
         }
-        return R, fluxes
+        return R, cell_report(tb, tg, fl, q_loss, co, **sources)
 
     extra_scale = 1.0
 

@@ -144,17 +144,11 @@ def solve_heat(
     res.coefficients(fluxes["t_gas_mean"], fluxes["t_bed_mean"], x[:, 2], check=True)
     return KilnSolution(
         name=kiln.name,
-        z_nodes=grid.z_nodes,
-        t_bed_nodes=np.asarray(tb_nodes, dtype=float),
-        t_gas_nodes=np.asarray(tg_nodes, dtype=float),
-        z=grid.z,
-        t_bed=fluxes.pop("t_bed_mean"),
-        t_gas=fluxes.pop("t_gas_mean"),
-        t_wall=x[:, 2].copy(),
+        **steady.profile_fields(
+            grid, tb_nodes, tg_nodes, x[:, 2 : 3 + nl], fluxes, R, q_ref, total_iter
+        ),
         t_shell=x[:, 2 + nl].copy(),
-        t_lining=x[:, 2 : 3 + nl].T.copy(),
         fill=grid.fill,
-        fluxes=fluxes,
         extra=x[:, 3 + nl :].copy(),
         heat_to_solids=heat_to_solids,
         heat_from_gas=heat_from_gas,
@@ -163,8 +157,6 @@ def solve_heat(
         energy_in=e_in,
         energy_out=e_out,
         balance_closure=float(closure),
-        iterations=total_iter,
-        residual=float(np.max(np.abs(R))) / q_ref,
         n_cells=grid.n,
         counter_current=kiln.counter_current,
         measurements=kiln.measurements,

@@ -6,7 +6,8 @@
 - :func:`newton_with_continuation`: banded Newton from the guess, and on failure a
   continuation, given as a list of :func:`ramp` stages (a parameter of the residual ramped
   0 -> 1, in fixed or adaptive steps);
-- :func:`check_finite`: no non-finite value leaves a solver.
+- :func:`check_finite`: no non-finite value leaves a solver;
+- :func:`profile_fields`: the temperature profiles and solver figures both solutions hold.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ __all__ = [
     "ramp",
     "newton_with_continuation",
     "check_finite",
+    "profile_fields",
     "FIXED_STEPS",
 ]
 
@@ -130,3 +132,25 @@ def check_finite(profiles: dict, per_cell: dict, z, iterations: int) -> None:
             raise ConvergenceError(
                 f"non-finite {key} in cell {j} (z = {z[j]:.4g} m)", iterations=iterations
             )
+
+
+def profile_fields(grid, t_bed_nodes, t_gas_nodes, t_wall, fluxes: dict, R, scale, iterations):
+    """Fields shared by both kiln solutions: faces and cells, temperatures, fluxes, solver.
+
+    ``t_wall``: the wall unknowns (K, ``(n, n_wall)``, inner surface first); ``fluxes``: the
+    per-cell dict of the residual (its ``t_bed_mean`` and ``t_gas_mean`` become ``t_bed`` and
+    ``t_gas``); ``R``: the final residual, judged against ``scale``.
+    """
+    return dict(
+        z_nodes=grid.z_nodes,
+        t_bed_nodes=np.asarray(t_bed_nodes, dtype=float),
+        t_gas_nodes=np.asarray(t_gas_nodes, dtype=float),
+        z=grid.z,
+        t_bed=fluxes.pop("t_bed_mean"),
+        t_gas=fluxes.pop("t_gas_mean"),
+        t_wall=t_wall[:, 0].copy(),
+        t_lining=t_wall.T.copy(),
+        fluxes=fluxes,
+        iterations=iterations,
+        residual=float(np.max(np.abs(R))) / scale,
+    )

@@ -83,6 +83,14 @@ class LinedWall:
     wind_speed: float = 0.0
     air: GasPropertyTable = field(default_factory=air_table, repr=False)
 
+    @classmethod
+    def of(cls, kiln, grid) -> LinedWall:
+        """The wall of a kiln model with ``layers``, ``eps_shell``, ``ambient_temperature``,
+        ``wind_speed``, on ``grid`` (its lining radii)."""
+        return cls(
+            kiln.layers, grid.radii, kiln.eps_shell, kiln.ambient_temperature, kiln.wind_speed
+        )
+
     @property
     def n_temperatures(self) -> int:
         """Temperatures per cell: inner surface, each interface, shell."""
