@@ -237,11 +237,12 @@ class CrossSectionExchange:
         )
 
     def gas_emissivity(self, gas: FreeboardGas, t_gas, check=False):
-        """Gas emissivity (-) by the ``gas_emissivity`` closure, capped at 0.95."""
+        """Gas emissivity (-) by the ``gas_emissivity`` closure, capped at 0.95 (the number 0
+        without radiation or without CO2 and H2O)."""
         c = self.closures
         if not c.radiation:
-            eps = np.zeros_like(t_gas)
-        elif self.emissivity_law is not None:
+            return 0.0
+        if self.emissivity_law is not None:
             a, b, lo = self.emissivity_law
             eps = np.maximum(a + b * t_gas, lo)
         elif not isinstance(c.gas_emissivity, str):
@@ -249,9 +250,10 @@ class CrossSectionExchange:
         else:
             p_w, p_c = gas.partial_pressures()
             L = self.geometry.beam_length
-            if not np.any(np.asarray(p_w + p_c) > 0):
-                eps = np.zeros_like(t_gas)  # no CO2 and no H2O: transparent
-            elif c.gas_emissivity == "johansson2011":
+            p_sum = p_w + p_c
+            if p_sum <= 0 if np.ndim(p_sum) == 0 else not np.any(p_sum > 0):
+                return 0.0  # no CO2 and no H2O: transparent
+            if c.gas_emissivity == "johansson2011":
                 eps = johansson_wsgg_emissivity(t_gas, p_w, p_c, L, check=check)
             else:
                 eps = smith_wsgg_emissivity(t_gas, (p_w + p_c) * L, "pw/pc=2", check=check)
@@ -300,10 +302,12 @@ class CrossSectionExchange:
         else:
             h_cw = wachters_kramers_covered_wall_h(kb, rho_c, self.omega, g.full_angle, check=check)
         eps = self.gas_emissivity(gas, tg, check=check)
+        if np.shape(h_cw) != np.shape(tg):
+            h_cw = h_cw * np.ones_like(tg)
         return {
             "h_gw": h_gw,
             "h_gb": h_gb,
-            "h_cw": h_cw * np.ones_like(tg),
+            "h_cw": h_cw,
             "eps_gas": eps,
             "Re": re,
         }

@@ -97,7 +97,7 @@ def solve_reacting(
     R, fl, prod, rate, (tb_n, tg_n, qb, qg) = res.evaluate(x[None], full=True)
     R, prod, rate = R[0], prod[0], rate[0]
     tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
-    fl = {key: np.asarray(v)[0] * np.ones(res.n) for key, v in fl.items()}
+    fl = {key: np.broadcast_to(v, (1, res.n))[0] * np.ones(res.n) for key, v in fl.items()}
     steady.check_finite(
         {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
     )
