@@ -115,7 +115,7 @@ def garcia_labiano_co2_equilibrium_pressure(T):
     ----------
     F. Garcia-Labiano, A. Abad, L.F. de Diego, P. Gayan, J. Adanez, Calcination of calcium-based
     sorbents at pressure in a broad range of CO2 concentrations, Chem. Eng. Sci. 57 (2002)
-    2381-2393 (as quoted in shared/reference/closures.md 5a, [MEMORY, verify]).
+    2381-2393 (as quoted in the team source folder reference/closures.md 5a, [MEMORY, verify]).
     """
     T = np.asarray(T, dtype=float)
     check_positive("calcination.T", T, "K")

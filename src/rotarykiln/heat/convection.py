@@ -9,7 +9,7 @@ Two families:
 - Gorog, Adams & Brimacombe (1982) as printed in seed 004: an entrance-region pipe-flow form
   for the wall and a dimensional mass-flux form for the bed.
 
-Coefficients and pitfalls: shared/reference/closures.md sections 1a-1c.
+Coefficients and pitfalls: team source folder reference/closures.md sections 1a-1c.
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@ r"""Emissivity of CO2/H2O gas mixtures (weighted sum of grey gases) and the free
 - :func:`gorog_mean_beam_length`: :math:`L_e = 0.95 D (1 - h/D)`.
 
 Partial pressures in Pa (converted to atm inside: the models are fitted in atm m).
-Coefficients: shared/reference/closures.md 3a, 3c, 3d.
+Coefficients: team source folder reference/closures.md 3a, 3c, 3d.
 """
 
 from __future__ import annotations
