@@ -198,7 +198,8 @@ class Bed(Section):
 
 
 class LiningLayer(Section):
-    """One lining layer of the ``heat`` section: a library material and a thickness."""
+    """One lining layer (``heat.lining``, ``chemistry.lining``): a library material, a thickness
+    and the stretches (from z, to z) where it is absent."""
 
     material: str
     thickness: Length
@@ -379,15 +380,24 @@ class Chemistry(Section):
     """Reacting kiln (rotarykiln.chemistry, rotarykiln.kiln.reacting): reactions (built-in names
     or user reactions as mappings), feed and gas compositions, seed-004 inputs, closures (default
     seed 004's), ``cells``, ``onset_width`` (K, ramp below sharp onset temperatures),
-    ``peclet`` (bed axial dispersion; default from the Sherritt et al. 2003 correlation)."""
+    ``peclet`` (bed axial dispersion; default from the Sherritt et al. 2003 correlation).
+    Wall: ``wall: wall_u`` (one wall temperature, loss U pi D (T_w - T_a), ``wall_loss``) or
+    ``wall: lining`` (the heat model's wall: ``lining`` layers with k(T), shell loss to
+    ``ambient_temperature`` with ``wind_speed``, ``shell_emissivity``); default ``lining`` when
+    a lining is given, else ``wall_u``."""
 
     reactions: Annotated[list, BeforeValidator(_reaction_names)]
     feed: ChemistryFeed
     gas: ChemistryGas = ChemistryGas()
     solid: ChemistrySolid = ChemistrySolid()
     residence_time: Time | None = None
+    wall: Literal["wall_u", "lining"] | None = None
     wall_loss: WallLoss | None = None
+    lining: list[LiningLayer] | None = None
+    ambient_temperature: Temperature | None = None
+    wind_speed: Velocity = 0.0
     wall_emissivity: Fraction | None = None
+    shell_emissivity: Fraction | None = None
     wall_temperature_guess: Temperature | None = None
     gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
     kirchhoff: bool = False

@@ -57,40 +57,90 @@ class Grid:
 
 
 def build_grid(kiln: HeatKiln, n_cells: int) -> Grid:
-    """Precompute the geometry of ``n_cells`` equal cells of ``kiln``."""
+    """Precompute the geometry of ``n_cells`` equal cells of the heat model's ``kiln``."""
+    return cell_grid(
+        kiln.length,
+        kiln.radius,
+        n_cells,
+        kiln.fill_at,
+        kiln.layers,
+        heat_release=kiln.heat_release,
+        heat_release_profile=kiln.heat_release_profile,
+    )
+
+
+def cell_grid(
+    length: float,
+    radius: float,
+    n_cells: int,
+    fill_at,
+    layers=(),
+    *,
+    heat_release: float = 0.0,
+    heat_release_profile=None,
+    section: str = "heat",
+) -> Grid:
+    """Precompute the geometry of ``n_cells`` equal cells of a kiln.
+
+    Parameters
+    ----------
+    length, radius : float, m
+        Kiln length and inner radius.
+    n_cells : int
+        Number of equal cells (>= 4).
+    fill_at : callable
+        Fill fraction (-) at positions z (m).
+    layers : tuple of Layer
+        Lining, inner to outer (empty: no lining radii beyond the inner surface).
+    heat_release : float, W
+        Heat released in the gas over the kiln, distributed by ``heat_release_profile``
+        (callable of z, normalised here; None: uniform).
+    section : str
+        Case section named in input errors (``heat``, ``chemistry``).
+
+    Returns
+    -------
+    Grid
+
+    Examples
+    --------
+    >>> g = cell_grid(2.0, 0.1, 4, lambda z: np.full_like(z, 0.15))
+    >>> round(float(g.chord[0]), 4), g.radii.shape
+    (0.1622, (1, 4))
+    """
     from rotarykiln.errors import InputError
 
     if int(n_cells) != n_cells or n_cells < 4:
-        raise InputError("heat.cells", n_cells, "an integer >= 4")
+        raise InputError(f"{section}.cells", n_cells, "an integer >= 4")
     n = int(n_cells)
-    zn = np.linspace(0.0, kiln.length, n + 1)
+    zn = np.linspace(0.0, length, n + 1)
     z = 0.5 * (zn[:-1] + zn[1:])
-    dz = kiln.length / n
-    fill = kiln.fill_at(z)
+    dz = length / n
+    fill = fill_at(z)
     if np.any(fill <= 0.0):
         j = int(np.argmax(fill <= 0.0))
-        raise InputError(f"heat.fill (cell {j}, z = {z[j]:.4g} m)", float(fill[j]), "> 0")
-    cs = CrossSection.from_fill(fill, kiln.radius)
-    R = kiln.radius
+        raise InputError(f"{section}.fill (cell {j}, z = {z[j]:.4g} m)", float(fill[j]), "> 0")
+    cs = CrossSection.from_fill(fill, radius)
+    R = radius
     theta = cs.theta
-    present = np.array([layer.present(z) for layer in kiln.layers])
+    present = np.array([layer.present(z) for layer in layers]).reshape(len(layers), n)
     thick = np.array(
         [
             np.where(p, layer.thickness, ABSENT_LAYER_THICKNESS)
-            for layer, p in zip(kiln.layers, present, strict=True)
+            for layer, p in zip(layers, present, strict=True)
         ]
-    )
+    ).reshape(len(layers), n)
     radii = R + np.vstack([np.zeros((1, n)), np.cumsum(thick, axis=0)])
-    if kiln.heat_release > 0:
-        if kiln.heat_release_profile is None:
+    if heat_release > 0:
+        if heat_release_profile is None:
             w = np.ones(n)
         else:
-            w = np.asarray(kiln.heat_release_profile(z), dtype=float) * np.ones(n)
+            w = np.asarray(heat_release_profile(z), dtype=float) * np.ones(n)
             if np.any(~np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0:
                 raise InputError(
-                    "heat.heat_release_profile", "profile", "finite, >= 0 and not all zero"
+                    f"{section}.heat_release_profile", "profile", "finite, >= 0 and not all zero"
                 )
-        q_rel = kiln.heat_release * w / (w.sum() * dz)
+        q_rel = heat_release * w / (w.sum() * dz)
     else:
         q_rel = np.zeros(n)
     return Grid(

@@ -22,9 +22,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from rotarykiln.chemistry.species import SpeciesTable, default_species
-from rotarykiln.materials.gas import T_REF, gas_table
+from rotarykiln.materials.gas import R_UNIVERSAL, T_REF, gas_table
 
-__all__ = ["GasMixture", "CANTERA_NAMES"]
+__all__ = ["GasMixture", "MixtureGas", "CANTERA_NAMES"]
 
 #: Species of the chemistry table -> GRI-Mech 3.0 name (None: no Cantera entry).
 CANTERA_NAMES = {
@@ -128,3 +128,50 @@ class GasMixture:
         tot = m.sum(axis=-1)
         moles = (m / self.molar_mass).sum(axis=-1)
         return tot / np.where(moles > 0, moles, 1.0)
+
+
+@dataclass(frozen=True)
+class MixtureGas:
+    """The freeboard gas of every cell for the exchange closures (a
+    :class:`~rotarykiln.kiln.exchange.FreeboardGas`): ``mixture``, the cell-mean species mass
+    flows ``flows`` (kg/s, ``(..., n, n_species)``), ``pressure`` (Pa) and the freeboard area
+    (m2).
+
+    Examples
+    --------
+    >>> g = MixtureGas.of(GasMixture.of(("N2", "CO2")), np.array([[0.9, 0.1]]), 101325.0, 0.1)
+    >>> round(float(g.mass_flux[0]), 3), [round(float(p[0])) for p in g.partial_pressures()]
+    (10.0, [0, 6693])
+    """
+
+    mixture: GasMixture
+    flows: np.ndarray
+    pressure: float
+    mass_flux: np.ndarray
+    total: np.ndarray
+
+    @classmethod
+    def of(cls, mixture: GasMixture, flows, pressure: float, freeboard_area) -> MixtureGas:
+        """State of the cells from their mean species flows (kg/s)."""
+        total = np.maximum(flows.sum(-1), 1e-12)
+        return cls(mixture, flows, pressure, total / freeboard_area, total)
+
+    def transport(self, T):
+        return self.mixture.transport(T, self.flows)
+
+    def conductivity(self, T):
+        return self.mixture.transport(T, self.flows)[0]
+
+    def density(self, T):
+        return self.pressure * self.mixture.mean_molar_mass(self.flows) / (R_UNIVERSAL * T)
+
+    def cp(self, T):
+        return (self.mixture.species_cp(T) * self.flows).sum(-1) / self.total
+
+    def partial_pressures(self):
+        names = self.mixture.names
+        x = self.mixture.mole_fractions(self.flows)
+        zero = 0.0 * x[..., 0]
+        p_w = self.pressure * x[..., names.index("H2O")] if "H2O" in names else zero
+        p_c = self.pressure * x[..., names.index("CO2")] if "CO2" in names else zero
+        return p_w, p_c

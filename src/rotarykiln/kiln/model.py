@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -60,6 +60,18 @@ class Closures:
             check_range(
                 "heat.closures.gas_emissivity", self.gas_emissivity, 0.0, 1.0, closed_low=True
             )
+
+    @classmethod
+    def from_case(cls, section) -> Closures:
+        """The closures of a case file's ``closures`` section (:class:`rotarykiln.case.HeatClosures`).
+
+        Examples
+        --------
+        >>> from rotarykiln.case import HeatClosures
+        >>> Closures.from_case(HeatClosures(gas_bed="gorog1982")).gas_bed
+        'gorog1982'
+        """
+        return cls(**{f.name: getattr(section, f.name) for f in fields(cls)})
 
 
 FillLike = float | np.ndarray | Callable[[np.ndarray], np.ndarray] | tuple

@@ -21,6 +21,7 @@ from rotarykiln.kiln.model import Closures
 from rotarykiln.kiln.reacting_model import SEED004_CLOSURES, ReactingKiln
 from rotarykiln.kiln.reacting_solution import ReactingSolution
 from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.kiln.wall import layers_from_case
 
 __all__ = [
     "mechanism_from_case",
@@ -113,19 +114,8 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
     law = None
     if g.emissivity_a is not None:
         law = (g.emissivity_a, g.emissivity_b_per_K or 0.0, g.emissivity_minimum or 0.0)
-    if ch.closures is None:
-        closures = SEED004_CLOSURES
-    else:
-        c = ch.closures
-        closures = Closures(
-            gas_wall=c.gas_wall,
-            gas_bed=c.gas_bed,
-            covered_wall=c.covered_wall,
-            radiation=c.radiation,
-            gas_emissivity=c.gas_emissivity,
-            bed_conductivity=c.bed_conductivity,
-        )
-    wl = ch.wall_loss
+    closures = SEED004_CLOSURES if ch.closures is None else Closures.from_case(ch.closures)
+    wall = _wall_from_case(ch)
     kiln = ReactingKiln(
         length=length,
         radius=radius,
@@ -142,16 +132,46 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
         gas_in={n: w * g.inlet_flow for n, w in g.composition.items()},
         gas_inlet_temperature=g.inlet_temperature,
         mechanism=mechanism_from_case(ch),
-        wall_loss_u=wl.U if wl is not None else 5.0,
-        ambient_temperature=wl.ambient_temperature if wl is not None else 298.15,
-        wall_emissivity=ch.wall_emissivity if ch.wall_emissivity is not None else 0.9,
+        wall_emissivity=ch.wall_emissivity,
         pressure=g.pressure,
         gas_emissivity_law=law,
         steam_flow=g.steam_flow,
         closures=closures,
         name=case.name,
+        **wall,
     )
     return kiln, int(ch.cells)
+
+
+def _wall_from_case(ch) -> dict:
+    """Wall inputs of :class:`ReactingKiln` from a ``chemistry`` section.
+
+    ``wall: wall_u`` (the default without a ``lining``): one wall temperature, U and ambient
+    from ``wall_loss`` (default 5 W/(m2 K), 298.15 K). ``wall: lining`` (the default with a
+    ``lining``): the heat model's lined wall, ambient from ``ambient_temperature`` (or
+    ``wall_loss.ambient_temperature``), ``wind_speed``, ``shell_emissivity``.
+    """
+    wl = ch.wall_loss
+    ambient = ch.ambient_temperature
+    if wl is not None and ambient is not None and wl.ambient_temperature != ambient:
+        raise InputError(
+            "chemistry.ambient_temperature",
+            ambient,
+            f"the same as chemistry.wall_loss.ambient_temperature ({wl.ambient_temperature} K)",
+        )
+    if ambient is None:
+        ambient = wl.ambient_temperature if wl is not None else 298.15
+    kind = ch.wall or ("lining" if ch.lining is not None else "wall_u")
+    out = {"ambient_temperature": ambient}
+    if kind == "wall_u":
+        out["wall_loss_u"] = wl.U if wl is not None else 5.0
+        return out
+    out.update(
+        layers=layers_from_case(ch.lining, "chemistry"),
+        wind_speed=ch.wind_speed,
+        shell_emissivity=ch.shell_emissivity,
+    )
+    return out
 
 
 def run_reacting_case(case, n_cells: int | None = None) -> ReactingSolution:
@@ -176,19 +196,14 @@ def reacting_runner(case, out: Path) -> dict:
     import matplotlib.pyplot as plt
 
     from rotarykiln.kiln.residence import residence_time_effects
-    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
+    from rotarykiln.kiln.run_files import write_solution_files
+    from rotarykiln.outputs import save_figure_atomic
 
     kiln, cells = reacting_kiln_from_case(case)
     sol = solve_reacting(kiln, cells)
     out = Path(out)
-    write_frame_atomic(out / "reacting_profiles.csv", sol.to_frame(), index=False)
-    summary = {f"reacting_{k}": v for k, v in sol.summary().items() if k != "name"}
     rtd = residence_time_effects(case, kiln, sol)
-    summary.update({f"reacting_{k}": v for k, v in rtd.summary().items()})
-    write_json_atomic(out / "reacting_summary.json", summary)
-    fig = sol.plot()
-    save_figure_atomic(out / "reacting_profiles.png", fig, dpi=100)
-    plt.close(fig)
+    summary = write_solution_files(sol, out, "reacting", extra=rtd.summary(), dpi=100)
     ax = rtd.plot()
     save_figure_atomic(out / "reacting_rtd.png", ax.figure, dpi=100)
     plt.close(ax.figure)

@@ -9,6 +9,7 @@ import numpy as np
 from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, check_range
 from rotarykiln.kiln.model import Closures
+from rotarykiln.materials.lining import Layer
 
 __all__ = ["ReactingKiln", "SEED004_CLOSURES"]
 
@@ -39,9 +40,13 @@ class ReactingKiln:
     ``pressure`` (Pa), ``gas_emissivity_law`` (a, b, minimum) for
     :math:`\\varepsilon_g = \\max(a + bT, \\min)` or None for the WSGG model of the closures
     with the local CO2 and H2O partial pressures.
-    Wall: single inner-wall temperature; shell loss :math:`U \\pi D (T_w - T_a)` with
-    ``wall_loss_u`` (W/(m2 K), on the inner wall) and ``ambient_temperature`` (K);
-    ``wall_emissivity``.
+    Wall: ``layers`` (inner to outer, :class:`~rotarykiln.materials.lining.Layer`): the lined
+    wall of the heat model (k(T) layers, shell loss by convection and radiation to
+    ``ambient_temperature`` with ``wind_speed`` m/s, ``shell_emissivity`` default that of the
+    last layer); without layers (the default, seed 004): a single inner-wall temperature with
+    the loss :math:`U \\pi D (T_w - T_a)`, ``wall_loss_u`` (W/(m2 K), on the inner wall).
+    ``ambient_temperature`` (K); ``wall_emissivity`` (inner surface; default that of the first
+    layer, or 0.9 without layers).
     Chemistry: ``mechanism`` (:class:`~rotarykiln.chemistry.Mechanism`), ``steam_flow`` (kg/s,
     seed 004's constant Q_a for the Ortiz law; None: the local gas H2O flow).
     ``closures`` (:class:`~rotarykiln.kiln.model.Closures`), ``name``.
@@ -64,7 +69,10 @@ class ReactingKiln:
     mechanism: Mechanism
     wall_loss_u: float = 5.0
     ambient_temperature: float = 298.15
-    wall_emissivity: float = 0.9
+    wall_emissivity: float | None = None
+    layers: tuple[Layer, ...] = ()
+    shell_emissivity: float | None = None
+    wind_speed: float = 0.0
     pressure: float = 101325.0
     gas_emissivity_law: tuple[float, float, float] | None = None
     steam_flow: float | None = None
@@ -82,7 +90,21 @@ class ReactingKiln:
         check_positive("material.bulk_density", self.bulk_density, "kg/m3")
         check_positive("chemistry.solid.thermal_conductivity", self.bed_conductivity, "W/(m K)")
         check_range("chemistry.solid.emissivity", self.bed_emissivity, 0.0, 1.0, closed_high=True)
-        check_range("chemistry.wall_emissivity", self.wall_emissivity, 0.0, 1.0, closed_high=True)
+        for name, eps in (
+            ("chemistry.wall_emissivity", self.wall_emissivity),
+            ("chemistry.shell_emissivity", self.shell_emissivity),
+        ):
+            if eps is not None:
+                check_range(name, eps, 0.0, 1.0, closed_high=True)
+        check_nonnegative("chemistry.wind_speed", self.wind_speed, "m/s")
+        if not isinstance(self.closures, Closures):
+            raise InputError("chemistry.closures", self.closures, "a Closures object")
+        if self.closures.bed_conductivity != "given":
+            raise InputError(
+                "chemistry.closures.bed_conductivity",
+                self.closures.bed_conductivity,
+                "given (the reacting kiln uses chemistry.solid.thermal_conductivity)",
+            )
         check_positive("material.particle_size", self.particle_diameter, "m")
         check_nonnegative("chemistry.wall_loss.U", self.wall_loss_u, "W/(m2 K)")
         check_positive("chemistry.wall_loss.ambient_temperature", self.ambient_temperature, "K")
@@ -108,6 +130,20 @@ class ReactingKiln:
                 raise InputError(
                     "chemistry.gas.emissivity", self.gas_emissivity_law, "finite a, b; 0 <= min < 1"
                 )
+
+    @property
+    def eps_wall(self) -> float:
+        """Emissivity of the inner wall surface, -."""
+        if self.wall_emissivity is not None:
+            return self.wall_emissivity
+        return self.layers[0].material.emissivity if self.layers else 0.9
+
+    @property
+    def eps_shell(self) -> float:
+        """Emissivity of the outer shell surface (lined wall), -."""
+        if self.shell_emissivity is not None:
+            return self.shell_emissivity
+        return self.layers[-1].material.emissivity if self.layers else 0.9
 
     @property
     def feed_flow(self) -> float:

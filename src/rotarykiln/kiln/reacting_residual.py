@@ -1,7 +1,8 @@
 r"""Residual of the reacting kiln: energy and species balances of every cell, one Newton system.
 
 Unknowns of cell ``j`` (last axis): 0 ``T_bed`` at face j+1 (solids outlet of the cell), 1
-``T_gas`` at face j (gas outlet, counter-current), 2 the inner wall, then the mass flows of the
+``T_gas`` at face j (gas outlet, counter-current), 2 the inner wall (with a lining: then each
+lining interface and the shell, :mod:`rotarykiln.kiln.wall`), then the mass flows of the
 reacting bed species at face j+1 and of the reacting gas species at face j, each divided by the
 phase's total inlet flow (for bed reactants that are fed and never produced, the square root
 of that ratio). Species that no reaction touches keep their inlet flow.
@@ -22,6 +23,9 @@ flows (implicit upwind: flows never turn negative):
 
     0 = Q_{gw} + Q_{rw} - Q_{cw} - U\pi D (T_w - T_a)
 
+(with a lining, the wall rows of the heat model instead: :mod:`rotarykiln.kiln.wall`). The
+exchange terms come from :class:`rotarykiln.kiln.exchange.CrossSectionExchange`, shared with
+the heat model.
 :math:`h_i` are sensible enthalpies (0 at 298.15 K): the gases the bed releases leave it at the
 bed temperature and are heated to the gas temperature inside the gas balance. Every term
 appears with the same value in the two balances it links, so the scheme is conservative:
@@ -33,33 +37,15 @@ from __future__ import annotations
 import numpy as np
 
 from rotarykiln.chemistry.mechanism import CellState as ChemState
-from rotarykiln.geometry import CrossSection
-from rotarykiln.heat.contact import (
-    li_covered_wall_h,
-    tscheng_covered_wall_h,
-    wachters_kramers_covered_wall_h,
-)
-from rotarykiln.heat.convection import (
-    gas_reynolds,
-    gorog_gas_bed_h,
-    gorog_gas_wall_h,
-    rotational_reynolds,
-    tscheng_watkinson_gas_bed_nusselt,
-    tscheng_watkinson_gas_wall_nusselt,
-)
-from rotarykiln.heat.gas_radiation import (
-    gorog_mean_beam_length,
-    johansson_wsgg_emissivity,
-    smith_wsgg_emissivity,
-)
-from rotarykiln.heat.radiation import freeboard_radiation
-from rotarykiln.kiln.gas_mixture import GasMixture
+from rotarykiln.kiln.discretisation import cell_grid
+from rotarykiln.kiln.exchange import FLOW_KEYS, BulkBed, CrossSectionExchange, cell_report
+from rotarykiln.kiln.gas_mixture import GasMixture, MixtureGas
 from rotarykiln.kiln.reacting_model import ReactingKiln
-from rotarykiln.materials.gas import R_UNIVERSAL, T_REF
+from rotarykiln.kiln.residual import T_FLOOR
+from rotarykiln.kiln.wall import ConstantUWall, LinedWall
+from rotarykiln.materials.gas import T_REF
 
 __all__ = ["ReactingResidual"]
-
-T_FLOOR = 150.0  # K, temperatures are clipped here inside property evaluations
 
 
 class ReactingResidual:
@@ -97,7 +83,6 @@ class ReactingResidual:
             [bool(k.feed.get(s, 0) > 0 and not made[sp.index(s)]) for s in self.bed_var],
             dtype=bool,
         )
-        self.nv = 3 + self.nb + self.ng
         self.bed_in = np.array([k.feed.get(s, 0.0) for s in self.bed_names])
         self.gas_inlet = np.array([k.gas_in.get(s, 0.0) for s in self.gas_names])
         self.bed_scale = float(self.bed_in.sum())
@@ -106,21 +91,31 @@ class ReactingResidual:
         self.mixture = GasMixture.of(self.gas_names, sp)
         self.flow_in = {s: float(k.feed.get(s, 0.0)) for s in sp.bed_names}
         self.i_h2o = self.gas_names.index("H2O") if "H2O" in self.gas_names else None
-        self.i_co2 = self.gas_names.index("CO2") if "CO2" in self.gas_names else None
-        # grid and constant geometry
-        self.n = n = int(n_cells)
-        self.z_nodes = np.linspace(0.0, k.length, n + 1)
-        self.z = 0.5 * (self.z_nodes[:-1] + self.z_nodes[1:])
-        self.dz = k.length / n
-        cs = CrossSection.from_fill(k.fill, k.radius)
-        self.theta = float(cs.theta)
-        self.chord = float(cs.chord)
-        self.exposed_wall = float(cs.exposed_wall_arc)
-        self.covered_wall = float(cs.covered_wall_arc)
-        self.freeboard_area = float(cs.freeboard_area)
-        self.hydraulic_diameter = float(cs.hydraulic_diameter)
-        self.beam_length = float(gorog_mean_beam_length(2 * k.radius, cs.depth))
-        self.perimeter = 2.0 * np.pi * k.radius
+        # grid, wall and exchange (shared with the heat model)
+        self.grid = g = cell_grid(
+            k.length,
+            k.radius,
+            n_cells,
+            lambda z: np.full_like(z, k.fill),
+            k.layers,
+            section="chemistry",
+        )
+        self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
+        if k.layers:
+            self.wall = LinedWall.of(k, g)
+        else:
+            self.wall = ConstantUWall(k.wall_loss_u, 2.0 * np.pi * k.radius, k.ambient_temperature)
+        self.n_wall = self.wall.n_temperatures
+        self.i_species = 2 + self.n_wall  # first species unknown
+        self.nv = self.i_species + self.nb + self.ng
+        bed = BulkBed(
+            k.bulk_density,
+            float(np.mean(self.cp_bed)),
+            k.particle_diameter,
+            k.bed_emissivity,
+            k.bed_conductivity,
+        )
+        self.exchange = CrossSectionExchange.of(k, g, bed, k.gas_emissivity_law)
         self.reaction_scale = 1.0  # continuation parameter on the reaction rates
         self.radiation_scale = 1.0  # continuation parameter on radiation
         self.q_ref = 1.0
@@ -133,65 +128,22 @@ class ReactingResidual:
         tb = np.concatenate([np.broadcast_to(k.feed_temperature, batch + (1,)), x[..., 0]], -1)
         tg = np.concatenate([x[..., 1], np.broadcast_to(k.gas_inlet_temperature, batch + (1,))], -1)
         qb = np.broadcast_to(self.bed_in, batch + (self.n + 1, len(self.bed_names))).copy()
-        xb = x[..., 3 : 3 + self.nb]
+        i0 = self.i_species
+        xb = x[..., i0 : i0 + self.nb]
         qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
         qg = np.broadcast_to(self.gas_inlet, batch + (self.n + 1, len(self.gas_names))).copy()
-        qg[..., :-1, self.gas_pos] = x[..., 3 + self.nb :] * self.gas_scale
+        qg[..., :-1, self.gas_pos] = x[..., i0 + self.nb :] * self.gas_scale
         return tb, tg, qb, qg
 
     # --- closures -------------------------------------------------------------------------------
+    def gas_state(self, g_mean) -> MixtureGas:
+        """The freeboard gas of the cells from their mean species flows (kg/s)."""
+        k = self.kiln
+        return MixtureGas.of(self.mixture, g_mean, k.pressure, self.grid.freeboard_area)
+
     def coefficients(self, tg, tb, tw, g_mean, check=False):
         """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell means."""
-        k, c = self.kiln, self.kiln.closures
-        mix = self.mixture
-        kg, mu = mix.transport(tg, g_mean)
-        gtot = np.maximum(g_mean.sum(-1), 1e-12)
-        flux = gtot / self.freeboard_area
-        De = self.hydraulic_diameter
-        re = gas_reynolds(flux, De, mu)
-        if "tscheng1979" in (c.gas_wall, c.gas_bed):
-            rho = k.pressure * mix.mean_molar_mass(g_mean) / (R_UNIVERSAL * tg)
-            re_w = rotational_reynolds(rho, k.omega, De, mu)
-        if c.gas_wall == "tscheng1979":
-            h_gw = tscheng_watkinson_gas_wall_nusselt(re, re_w, check=check) * kg / De
-        else:
-            cp = (mix.species_cp(tg) * g_mean).sum(-1) / gtot
-            h_gw = gorog_gas_wall_h(kg, De, re, cp * mu / kg, k.length, check=check)
-        if c.gas_bed == "tscheng1979":
-            h_gb = tscheng_watkinson_gas_bed_nusselt(re, re_w, k.fill, check=check) * kg / De
-        else:
-            h_gb = gorog_gas_bed_h(flux, check=check) * np.ones_like(tg)
-        rho_c = k.bulk_density * np.mean(self.cp_bed)
-        kb = k.bed_conductivity
-        if c.covered_wall == "tscheng1979":
-            h_cw = tscheng_covered_wall_h(kb, rho_c, k.omega, k.radius, 2 * self.theta, check=check)
-        elif c.covered_wall == "li2005":
-            kf, _ = mix.transport(0.5 * (tw + tb), g_mean)
-            h_cw = li_covered_wall_h(
-                kf, k.particle_diameter, kb, rho_c, k.omega, 2 * self.theta, check=check
-            )
-        else:
-            h_cw = wachters_kramers_covered_wall_h(kb, rho_c, k.omega, 2 * self.theta, check=check)
-        h_cw = h_cw * np.ones_like(tg)
-        if not c.radiation:
-            eps = np.zeros_like(tg)
-        elif k.gas_emissivity_law is not None:
-            a, b, lo = k.gas_emissivity_law
-            eps = np.maximum(a + b * tg, lo)
-        elif not isinstance(c.gas_emissivity, str):
-            eps = float(c.gas_emissivity) * np.ones_like(tg)
-        else:
-            x = mix.mole_fractions(g_mean)
-            p_w = k.pressure * (x[..., self.i_h2o] if self.i_h2o is not None else 0.0 * tg)
-            p_c = k.pressure * (x[..., self.i_co2] if self.i_co2 is not None else 0.0 * tg)
-            if c.gas_emissivity == "johansson2011":
-                eps = johansson_wsgg_emissivity(
-                    tg, np.maximum(p_w, 1e-3), np.maximum(p_c, 1e-3), self.beam_length, check=False
-                )
-            else:
-                eps = smith_wsgg_emissivity(tg, (p_w + p_c) * self.beam_length, check=False)
-        eps = np.clip(eps, 0.0, 0.95)
-        return {"h_gw": h_gw, "h_gb": h_gb, "h_cw": h_cw, "eps_gas": eps, "Re": re}
+        return self.exchange.coefficients(self.gas_state(g_mean), tg, tb, tw, check=check)
 
     # --- chemistry ------------------------------------------------------------------------------
     def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb):
@@ -212,7 +164,7 @@ class ReactingResidual:
             steam = np.zeros(flat)
         inputs = {
             "steam_mass_flow": steam,
-            "drying_conductance": (h_gb * self.chord).reshape(flat),
+            "drying_conductance": (h_gb * self.grid.chord).reshape(flat),
             "bed_heat_input": q_bed_in.reshape(flat),
         }
         st = ChemState(
@@ -234,36 +186,19 @@ class ReactingResidual:
     # --- residual -------------------------------------------------------------------------------
     def evaluate(self, x, full: bool = False):
         """Residual (..., n, nv): W per cell for the energy rows, scaled flows for species."""
-        k = self.kiln
         dz = self.dz
         tb_n, tg_n, qb, qg = self.faces(x)
         tbn = np.maximum(tb_n, T_FLOOR)
         tgn = np.maximum(tg_n, T_FLOOR)
         tb = 0.5 * (tbn[..., :-1] + tbn[..., 1:])
         tg = 0.5 * (tgn[..., :-1] + tgn[..., 1:])
-        tw = np.maximum(x[..., 2], T_FLOOR)
+        tl = np.maximum(x[..., 2 : 2 + self.n_wall], T_FLOOR)  # inner wall (.. shell)
+        tw = tl[..., 0]
         g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
-        co = self.coefficients(tg, tb, tw, g_mean)
-        q_gw = co["h_gw"] * self.exposed_wall * (tg - tw)
-        q_gb = co["h_gb"] * self.chord * (tg - tb)
-        q_cw = co["h_cw"] * self.covered_wall * (tw - tb)
-        if k.closures.radiation:
-            q_rw, q_rb = freeboard_radiation(
-                tg,
-                tw,
-                tb,
-                co["eps_gas"],
-                k.wall_emissivity,
-                k.bed_emissivity,
-                self.exposed_wall,
-                self.chord,
-                check=False,
-            )
-            q_rw = self.radiation_scale * q_rw
-            q_rb = self.radiation_scale * q_rb
-        else:
-            q_rw = q_rb = 0.0 * tg
-        q_loss = k.wall_loss_u * self.perimeter * (tw - k.ambient_temperature)
+        gas = self.gas_state(g_mean)
+        fl, co = self.exchange.flows(gas, tg, tb, tw, self.radiation_scale)
+        q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
+        wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
         prod, heat, rate = self.rates(tb, tg, qb[..., 1:, :], qg[..., :-1, :], q_bed_in, co["h_gb"])
         w_bed = prod[..., self.bed_idx]
@@ -277,8 +212,7 @@ class ReactingResidual:
         Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
         r_gas = Hg[..., :-1] - Hg[..., 1:] + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
-        r_wall = dz * (q_gw + q_rw - q_cw - q_loss)
-        parts = [r_bed[..., None], r_gas[..., None], r_wall[..., None]]
+        parts = [r_bed[..., None], r_gas[..., None]] + [(dz * r)[..., None] for r in wall_rows]
         if self.nb:
             qv = qb[..., self.bed_pos]
             rb = (qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]) / self.bed_scale
@@ -290,20 +224,12 @@ class ReactingResidual:
         R = np.concatenate(parts, axis=-1)
         if not full:
             return R
-        fluxes = {
-            "t_bed_mean": tb,
-            "t_gas_mean": tg,
-            "q_gas_wall_conv": q_gw,
-            "q_gas_bed_conv": q_gb,
-            "q_covered_wall_bed": q_cw,
-            "q_rad_to_wall": q_rw,
-            "q_rad_to_bed": q_rb,
-            "q_shell_loss": q_loss,
+        chemistry = {
             "q_reaction_absorbed": heat,
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
-            **co,
         }
+        fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
         return R, fluxes, prod, rate, (tb_n, tg_n, qb, qg)
 
     def __call__(self, x):

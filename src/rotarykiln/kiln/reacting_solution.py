@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.chemistry.ratelaws import MOISTURE
+from rotarykiln.kiln.profiles import heat_flow_columns, plot_temperature_profiles
 
 __all__ = ["ReactingSolution"]
 
@@ -18,7 +19,9 @@ class ReactingSolution:
 
     Face profiles (``n + 1`` values, z = 0 at the solids inlet): ``z_nodes`` (m),
     ``t_bed_nodes``, ``t_gas_nodes`` (K), ``bed_flows`` and ``gas_flows`` (species -> kg/s).
-    Cell profiles: ``z`` (m), ``t_bed``, ``t_gas`` (cell means), ``t_wall`` (K),
+    Cell profiles: ``z`` (m), ``t_bed``, ``t_gas`` (cell means), ``t_wall`` (inner wall, K),
+    ``t_lining`` (wall temperatures, inner surface to shell, shape ``(n_wall, n)``, K; one row
+    for the constant-U wall),
     ``reaction_rates`` (reaction -> kg basis/(s m)), ``fluxes`` (W/m per path, coefficients).
     Balances: ``energy_closure`` = (enthalpy in - out - shell loss - reaction heat) / heat to the
     solids (-), ``element_closure`` (element -> relative |in - out|), ``reaction_heat`` (W,
@@ -50,6 +53,14 @@ class ReactingSolution:
     residence_time: float
     fill: float
     feed: dict = field(repr=False, default_factory=dict)
+    t_lining: np.ndarray | None = field(repr=False, default=None)
+
+    @property
+    def t_shell(self) -> np.ndarray | None:
+        """Outer shell temperature (K, cells) of a lined wall; None for the constant-U wall."""
+        if self.t_lining is None or len(self.t_lining) < 2:
+            return None
+        return self.t_lining[-1]
 
     # --- performance --------------------------------------------------------------------------
     def _dry(self, i: int) -> float:
@@ -155,15 +166,15 @@ class ReactingSolution:
             "T_gas_K": self.t_gas_nodes,
             "T_wall_K": np.interp(self.z_nodes, self.z, self.t_wall),
         }
+        if self.t_shell is not None:
+            data["T_shell_K"] = np.interp(self.z_nodes, self.z, self.t_shell)
         for s, q in self.bed_flows.items():
             data[f"bed_{s}_kg_s"] = q
         for s, q in self.gas_flows.items():
             data[f"gas_{s}_kg_s"] = q
         for r, v in self.reaction_rates.items():
             data[f"rate_{r}_kg_s_m"] = np.interp(self.z_nodes, self.z, v)
-        for key, v in self.fluxes.items():
-            if key.startswith("q_"):
-                data[f"{key}_W_per_m"] = np.interp(self.z_nodes, self.z, np.asarray(v))
+        data.update(heat_flow_columns(self.fluxes, lambda v: np.interp(self.z_nodes, self.z, v)))
         return pd.DataFrame(data)
 
     def plot(self, ax=None):
@@ -175,13 +186,7 @@ class ReactingSolution:
         else:
             fig = np.atleast_1d(ax)[0].figure
         a0, a1 = np.atleast_1d(ax)[:2]
-        a0.plot(self.z_nodes, self.t_gas_nodes, color="tab:red", label="gas")
-        a0.plot(self.z_nodes, self.t_bed_nodes, color="tab:brown", label="bed")
-        a0.plot(self.z, self.t_wall, color="tab:gray", label="wall")
-        a0.set_xlabel("z from solids inlet (m)")
-        a0.set_ylabel("temperature (K)")
-        a0.set_title(self.name)
-        a0.legend(fontsize=8)
+        plot_temperature_profiles(self, a0, t_shell=self.t_shell)
         for s, q in self.bed_flows.items():
             if np.ptp(q) > 0 or q[0] > 0:
                 a1.plot(self.z_nodes, q * 1e3, label=f"bed {s}")

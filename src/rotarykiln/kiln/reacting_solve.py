@@ -6,7 +6,7 @@ import numpy as np
 
 from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
 from rotarykiln.errors import ConvergenceError, InputError
-from rotarykiln.kiln.newton import newton_banded
+from rotarykiln.kiln import steady
 from rotarykiln.kiln.reacting_model import ReactingKiln
 from rotarykiln.kiln.reacting_residual import ReactingResidual
 from rotarykiln.kiln.reacting_solution import ReactingSolution
@@ -18,20 +18,21 @@ __all__ = ["solve_reacting", "ENERGY_RTOL"]
 ENERGY_RTOL = 1e-6
 #: Floor of the finite-difference step of the scaled species unknowns (flow / inlet flow).
 SPECIES_STEP_FLOOR = 1e-6
-_EQ = ("bed energy", "gas energy", "inner wall")
 
 
 def _initial_guess(res: ReactingResidual) -> np.ndarray:
     k = res.kiln
-    zeta = res.z_nodes / k.length
-    th, tf = k.gas_inlet_temperature, k.feed_temperature
+    t_b, t_g, t_wall = steady.initial_temperatures(
+        res.z_nodes, k.feed_temperature, k.gas_inlet_temperature, res.wall
+    )
+    i0 = res.i_species
     x = np.empty((res.n, res.nv))
-    x[:, 0] = tf + 0.6 * (th - tf) * zeta[1:]
-    x[:, 1] = th - 0.5 * (th - tf) * (1.0 - zeta[:-1])
-    x[:, 2] = 0.5 * (x[:, 0] + x[:, 1])
+    x[:, 0] = t_b
+    x[:, 1] = t_g
+    x[:, 2:i0] = t_wall
     xb = res.bed_in[res.bed_pos] / res.bed_scale
-    x[:, 3 : 3 + res.nb] = np.where(res.sqrt_mask, np.sqrt(xb), xb)
-    x[:, 3 + res.nb :] = res.gas_inlet[res.gas_pos] / res.gas_scale
+    x[:, i0 : i0 + res.nb] = np.where(res.sqrt_mask, np.sqrt(xb), xb)
+    x[:, i0 + res.nb :] = res.gas_inlet[res.gas_pos] / res.gas_scale
     return x
 
 
@@ -86,32 +87,20 @@ def solve_reacting(
     res = ReactingResidual(kiln, int(n_cells))
     q_ref = _reference_heat(res)
     res.q_ref = q_ref
-    names = [f"bed {s}" for s in res.bed_var] + [f"gas {s}" for s in res.gas_var]
-
-    def where(j, v):
-        eq = _EQ[v] if v < 3 else f"{names[v - 3]} flow"
-        return f"cell {j} (z = {res.z[j]:.4g} m), {eq}"
-
-    floor = np.concatenate([np.ones(3), np.full(res.nv - 3, SPECIES_STEP_FLOOR)])
-    kw = dict(tol=tol, max_iter=max_iter, temperature_vars=3, where=where, step_floor=floor)
-    total = 0
+    i0 = res.i_species
+    species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
+    where = steady.locator(res.z, steady.equation_names(res.wall, species))
+    floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
+    kw = dict(tol=tol, max_iter=max_iter, temperature_vars=i0, where=where, step_floor=floor)
     x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
-    try:
-        x, rep = newton_banded(res, x0, q_ref, **kw)
-        total += rep.iterations
-    except ConvergenceError:
-        x, total = _continuation(res, x0, q_ref, kw)
+    x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
     R, fl, prod, rate, (tb_n, tg_n, qb, qg) = res.evaluate(x[None], full=True)
     R, prod, rate = R[0], prod[0], rate[0]
     tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
-    fl = {key: np.asarray(v)[0] * np.ones(res.n) for key, v in fl.items()}
-    for label, arr in (("T_bed", tb_n), ("T_gas", tg_n), ("T_wall", x[:, 2]), ("flows", qb)):
-        if not np.all(np.isfinite(arr)):
-            raise ConvergenceError(f"non-finite {label} in the solution", iterations=total)
-    for key, arr in fl.items():
-        if not np.all(np.isfinite(arr)):
-            j = int(np.argmax(~np.isfinite(arr)))
-            raise ConvergenceError(f"non-finite {key} in cell {j} (z = {res.z[j]:.4g} m)")
+    fl = {key: np.broadcast_to(v, (1, res.n))[0] * np.ones(res.n) for key, v in fl.items()}
+    steady.check_finite(
+        {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
+    )
     # validity ranges of the heat-transfer closures, checked once on the converged state
     g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
     res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True)
@@ -151,17 +140,10 @@ def solve_reacting(
     fl["x"] = x.copy()
     return ReactingSolution(
         name=kiln.name,
-        z_nodes=res.z_nodes,
-        t_bed_nodes=np.asarray(tb_n, dtype=float),
-        t_gas_nodes=np.asarray(tg_n, dtype=float),
+        **steady.profile_fields(res.grid, tb_n, tg_n, x[:, 2:i0], fl, R, q_ref, total),
         bed_flows={s: np.maximum(qb[:, i], 0.0) for i, s in enumerate(res.bed_names)},
         gas_flows={s: np.maximum(qg[:, i], 0.0) for i, s in enumerate(res.gas_names)},
-        z=res.z,
-        t_bed=fl.pop("t_bed_mean"),
-        t_gas=fl.pop("t_gas_mean"),
-        t_wall=x[:, 2].copy(),
         reaction_rates={r: rate[:, i].copy() for i, r in enumerate(kiln.mechanism.names)},
-        fluxes=fl,
         energy_in=e_in,
         energy_out=e_out,
         shell_loss=loss,
@@ -169,41 +151,30 @@ def solve_reacting(
         heat_to_solids=heat_to_solids,
         energy_closure=float(closure),
         element_closure={e: float(v) for e, v in elements.items()},
-        iterations=total,
-        residual=float(np.max(np.abs(R))) / q_ref,
         residence_time=kiln.residence_time,
         fill=kiln.fill,
         feed=dict(kiln.feed),
     )
 
 
-def _continuation(res: ReactingResidual, x0, q_ref, kw):
-    """Reaction rates (and radiation) ramped from 0 to 1 with adaptive steps."""
-    total = 0
-    res.reaction_scale = 0.0
-    try:
-        x, rep = newton_banded(res, x0, q_ref, **kw)
-        total += rep.iterations
-    except ConvergenceError:
-        x = x0
-        for r in (0.0, 0.25, 0.5, 0.75, 1.0):
-            res.radiation_scale = r
-            x, rep = newton_banded(res, x, q_ref, **kw)
-            total += rep.iterations
-    lam, step = 0.0, 0.25
-    while lam < 1.0:
-        trial = min(1.0, lam + step)
-        res.reaction_scale = trial
-        try:
-            x_new, rep = newton_banded(res, x, q_ref, **kw)
-        except ConvergenceError:
-            step /= 2.0
-            if step < 1.0 / 256:
-                res.reaction_scale = 1.0
-                raise
-            continue
-        total += rep.iterations
-        x, lam = x_new, trial
-        step = min(0.5, step * 2.0)
-    res.reaction_scale = 1.0
-    return x, total
+def _continuation(res: ReactingResidual):
+    """Reaction rates off (with radiation ramped 0 -> 1 if needed), then ramped 0 -> 1 in
+    adaptive steps."""
+
+    def set_reactions(value):
+        res.reaction_scale = value
+
+    def set_radiation(value):
+        res.radiation_scale = value
+
+    radiation_ramp = steady.ramp(set_radiation)
+    reactions = steady.ramp(set_reactions, adaptive=True)
+
+    def run(F, x0, scale, kw):
+        set_reactions(0.0)
+        x, total = steady.newton_with_continuation(F, x0, scale, radiation_ramp, **kw)
+        x, more = reactions(F, x, scale, kw)
+        set_reactions(1.0)
+        return x, total + more
+
+    return run

@@ -15,10 +15,11 @@ import numpy as np
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.coupling import bed_fill_profile
 from rotarykiln.kiln.model import Closures, HeatKiln
+from rotarykiln.kiln.run_files import write_solution_files
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_heat
+from rotarykiln.kiln.wall import layers_from_case
 from rotarykiln.materials.gas import burn_fuel, gas_table
-from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.materials.solids import load_solid
 
 __all__ = [
@@ -88,16 +89,7 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
         raise InputError(
             "heat.fill", None, "given (or a transport: section, or a bed: section with fill)"
         )
-    layers = tuple(
-        Layer(
-            load_lining_material(layer.material),
-            layer.thickness,
-            absent=tuple(tuple(a) for a in layer.absent),
-        )
-        for layer in h.lining
-    )
-    if not layers:
-        raise InputError("heat.lining", "[]", "a list of at least one layer")
+    layers = layers_from_case(h.lining, "heat")
     length = case.kiln.length
     kw = {}
     if h.burner is not None:
@@ -143,14 +135,7 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
         shell_emissivity=h.shell_emissivity,
         ambient_temperature=h.ambient_temperature,
         wind_speed=h.wind_speed,
-        closures=Closures(
-            gas_wall=c.gas_wall,
-            gas_bed=c.gas_bed,
-            covered_wall=c.covered_wall,
-            radiation=c.radiation,
-            gas_emissivity=c.gas_emissivity,
-            bed_conductivity=c.bed_conductivity,
-        ),
+        closures=Closures.from_case(c),
         measurements=meas,
         name=case.name,
         **kw,
@@ -179,19 +164,6 @@ def heat_runner(case, out: Path) -> dict:
     A case that also has a ``chemistry:`` section is solved by the reacting kiln
     (:func:`rotarykiln.kiln.reacting.reacting_runner`) instead: this runner then does nothing.
     """
-    import matplotlib.pyplot as plt
-
     if getattr(case, "chemistry", None) is not None:
         return {}
-
-    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
-
-    sol = run_heat_case(case)
-    out = Path(out)
-    write_frame_atomic(out / "heat_profiles.csv", sol.to_frame(), index=False)
-    summary = {f"heat_{k}": v for k, v in sol.summary().items() if k != "name"}
-    write_json_atomic(out / "heat_summary.json", summary)
-    ax = sol.plot()
-    save_figure_atomic(out / "heat_profiles.png", ax.figure, dpi=110)
-    plt.close(ax.figure)
-    return summary
+    return write_solution_files(run_heat_case(case), out, "heat", dpi=110)

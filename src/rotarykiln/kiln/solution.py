@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from rotarykiln.kiln.profiles import heat_flow_columns, plot_temperature_profiles
+
 __all__ = ["KilnSolution"]
 
 
@@ -107,10 +109,9 @@ class KilnSolution:
             "T_shell_K": self.t_shell,
             "fill": self.fill,
         }
+        data.update(heat_flow_columns(self.fluxes))
         for key, value in self.fluxes.items():
-            if key.startswith("q_"):
-                data[f"{key}_W_per_m"] = np.asarray(value)
-            elif key.startswith("h_"):
+            if key.startswith("h_"):
                 data[f"{key}_W_per_m2K"] = np.asarray(value)
             elif key == "eps_gas":
                 data["eps_gas"] = np.broadcast_to(np.asarray(value), self.z.shape)
@@ -118,32 +119,6 @@ class KilnSolution:
 
     def plot(self, ax=None):
         """Temperature profiles (gas, bed, wall, shell), with measured points if any."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 4.2))
-        ax.plot(self.z_nodes, self.t_gas_nodes, color="tab:red", label="gas")
-        ax.plot(self.z_nodes, self.t_bed_nodes, color="tab:brown", label="bed")
-        ax.plot(self.z, self.t_wall, color="tab:gray", label="inner wall")
-        ax.plot(self.z, self.t_shell, color="tab:blue", ls="--", label="shell")
-        m = self.measurements or {}
-        for key, color, marker in (
-            ("gas", "tab:red", "o"),
-            ("bed", "tab:brown", "s"),
-            ("wall", "tab:gray", "^"),
-        ):
-            if f"z_{key}" in m and f"t_{key}" in m:
-                ax.plot(
-                    m[f"z_{key}"],
-                    m[f"t_{key}"],
-                    ls="none",
-                    marker=marker,
-                    mfc="none",
-                    color=color,
-                    label=f"{key}, measured",
-                )
-        ax.set_xlabel("z from solids inlet (m)")
-        ax.set_ylabel("temperature (K)")
-        ax.set_title(self.name)
-        ax.legend(fontsize=8, ncol=2)
-        return ax
+        return plot_temperature_profiles(
+            self, ax, t_shell=self.t_shell, measurements=self.measurements
+        )

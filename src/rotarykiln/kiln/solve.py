@@ -6,10 +6,10 @@ import warnings
 
 import numpy as np
 
-from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.errors import InputError
+from rotarykiln.kiln import steady
 from rotarykiln.kiln.discretisation import build_grid
 from rotarykiln.kiln.model import HeatKiln
-from rotarykiln.kiln.newton import newton_banded
 from rotarykiln.kiln.residual import HeatResidual
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.sources import SourceTerms
@@ -17,7 +17,6 @@ from rotarykiln.kiln.sources import SourceTerms
 __all__ = ["solve_heat", "DEFAULT_CELLS"]
 
 DEFAULT_CELLS = 100
-_EQ = ("bed energy", "gas energy", "inner wall")
 
 
 def _hot_temperature(kiln: HeatKiln) -> float:
@@ -31,28 +30,20 @@ def _hot_temperature(kiln: HeatKiln) -> float:
 
 def _initial_guess(kiln: HeatKiln, res: HeatResidual) -> np.ndarray:
     g = res.grid
-    n = g.n
-    zeta = g.z_nodes[1:] / kiln.length  # bed faces 1..n
-    t_hot = _hot_temperature(kiln)
-    tf = kiln.solids_inlet_temperature
-    t_b = tf + 0.6 * (t_hot - tf) * zeta
-    if kiln.counter_current:
-        zg = g.z_nodes[:-1] / kiln.length  # gas unknowns at faces 0..n-1
-        t_g = t_hot - 0.5 * (t_hot - tf) * (1.0 - zg)
-    else:
-        zg = g.z_nodes[1:] / kiln.length
-        t_g = t_hot - 0.5 * (t_hot - tf) * zg
-    t_w = 0.5 * (t_b + t_g)
-    nl = res.n_layers
-    x = np.empty((n, res.nv))
+    t_b, t_g, t_wall = steady.initial_temperatures(
+        g.z_nodes,
+        kiln.solids_inlet_temperature,
+        _hot_temperature(kiln),
+        res.wall,
+        kiln.counter_current,
+    )
+    x = np.empty((g.n, res.nv))
     x[:, 0] = t_b
     x[:, 1] = t_g
-    ta = kiln.ambient_temperature
-    for i in range(nl + 1):
-        x[:, 2 + i] = t_w - (t_w - ta) * 0.8 * i / nl
+    x[:, 2 : 3 + res.n_layers] = t_wall
     if res.n_extra:
-        x[:, 3 + nl :] = np.asarray(res.sources.initial_extra(g.z), dtype=float).reshape(
-            n, res.n_extra
+        x[:, 3 + res.n_layers :] = np.asarray(res.sources.initial_extra(g.z), dtype=float).reshape(
+            g.n, res.n_extra
         )
     return x
 
@@ -104,37 +95,28 @@ def solve_heat(
     q_ref = float(max(span_g, span_s, 1.0))
     res.extra_scale = q_ref
     nl = res.n_layers
+    extra = [f"source unknown {i}" for i in range(res.n_extra)]
+    where = steady.locator(grid.z, steady.equation_names(res.wall, extra))
 
-    def where(j, v):
-        if v < 3:
-            eq = _EQ[v]
-        elif v < 2 + nl:
-            eq = f"lining interface {v - 2}"
-        elif v == 2 + nl:
-            eq = "shell"
-        else:
-            eq = f"source unknown {v - 3 - nl}"
-        return f"cell {j} (z = {grid.z[j]:.4g} m), {eq}"
+    def set_homotopy(lam):
+        res.homotopy = lam
 
+    # continuation if Newton fails: radiation and heat release ramped from 0 to 1
     x0 = _initial_guess(kiln, res) if initial is None else np.array(initial, dtype=float)
     kwargs = dict(tol=tol, max_iter=max_iter, temperature_vars=3 + nl, where=where)
-    try:
-        x, rep = newton_banded(res, x0, q_ref, **kwargs)
-        total_iter = rep.iterations
-    except ConvergenceError:
-        # continuation: ramp radiation and heat release from 0 to 1
-        x = x0
-        total_iter = 0
-        for lam in (0.0, 0.25, 0.5, 0.75, 1.0):
-            res.homotopy = lam
-            x, rep = newton_banded(res, x, q_ref, **kwargs)
-            total_iter += rep.iterations
+    x, total_iter = steady.newton_with_continuation(
+        res, x0, q_ref, steady.ramp(set_homotopy), **kwargs
+    )
     res.homotopy = 1.0
     R, fl = res.evaluate(x, full=True)
     tb_nodes, tg_nodes = res.unpack(x)
-    for name, arr in (("T_bed", tb_nodes), ("T_gas", tg_nodes), ("T_wall", x[:, 2 : 3 + nl])):
-        if not np.all(np.isfinite(arr)):
-            raise ConvergenceError(f"non-finite {name} in the solution", iterations=total_iter)
+    fluxes = {k: np.array(v, dtype=float) * np.ones(grid.n) for k, v in fl.items()}
+    steady.check_finite(
+        {"T_bed": tb_nodes, "T_gas": tg_nodes, "T_wall": x[:, 2 : 3 + nl]},
+        fluxes,
+        grid.z,
+        total_iter,
+    )
     h_s = kiln.solid.enthalpy
     h_g = kiln.gas.enthalpy
     t_g_in = kiln.gas_inlet_temperature
@@ -158,28 +140,15 @@ def solve_heat(
             RuntimeWarning,
             stacklevel=2,
         )
-    fluxes = {k: np.array(v, dtype=float) * np.ones(grid.n) for k, v in fl.items()}
-    for key, arr in fluxes.items():
-        if not np.all(np.isfinite(arr)):
-            j = int(np.argmax(~np.isfinite(arr)))
-            raise ConvergenceError(
-                f"non-finite {key} in cell {j} (z = {grid.z[j]:.4g} m)", iterations=total_iter
-            )
     # validity ranges of the closures, checked once on the converged state
     res.coefficients(fluxes["t_gas_mean"], fluxes["t_bed_mean"], x[:, 2], check=True)
     return KilnSolution(
         name=kiln.name,
-        z_nodes=grid.z_nodes,
-        t_bed_nodes=np.asarray(tb_nodes, dtype=float),
-        t_gas_nodes=np.asarray(tg_nodes, dtype=float),
-        z=grid.z,
-        t_bed=fluxes.pop("t_bed_mean"),
-        t_gas=fluxes.pop("t_gas_mean"),
-        t_wall=x[:, 2].copy(),
+        **steady.profile_fields(
+            grid, tb_nodes, tg_nodes, x[:, 2 : 3 + nl], fluxes, R, q_ref, total_iter
+        ),
         t_shell=x[:, 2 + nl].copy(),
-        t_lining=x[:, 2 : 3 + nl].T.copy(),
         fill=grid.fill,
-        fluxes=fluxes,
         extra=x[:, 3 + nl :].copy(),
         heat_to_solids=heat_to_solids,
         heat_from_gas=heat_from_gas,
@@ -188,8 +157,6 @@ def solve_heat(
         energy_in=e_in,
         energy_out=e_out,
         balance_closure=float(closure),
-        iterations=total_iter,
-        residual=float(np.max(np.abs(R))) / q_ref,
         n_cells=grid.n,
         counter_current=kiln.counter_current,
         measurements=kiln.measurements,

@@ -1,0 +1,360 @@
+r"""Heat exchange across a kiln cross-section: every closure dispatched in one place.
+
+Both steady kilns (the heat model, :class:`~rotarykiln.kiln.residual.HeatResidual`, and the
+reacting model, :class:`~rotarykiln.kiln.reacting_residual.ReactingResidual`) compute the heat
+flows per metre of kiln between gas, exposed wall, bed and covered wall with
+:class:`CrossSectionExchange`, given the cell-mean temperatures and a :class:`FreeboardGas`
+(the gas properties of that model: a table of fixed composition, :class:`TableGas`, or the
+mixture of changing composition of the reacting kiln,
+:class:`~rotarykiln.kiln.gas_mixture.MixtureGas`):
+
+.. math::
+    Q_{gw} = h_{gw} A_w (T_g - T_w),\quad Q_{gb} = h_{gb} L_c (T_g - T_b),\quad
+    Q_{cw} = h_{cw} A_c (T_w - T_b),\quad (Q_{rw}, Q_{rb}) = \text{grey network}(\varepsilon_g)
+
+with the closures chosen by name in :class:`~rotarykiln.kiln.model.Closures`: gas-wall and
+gas-bed convection (``tscheng1979``, ``gorog1982``), covered wall (``li2005``,
+``tscheng1979``, ``wachters_kramers1964``), bed conductivity (``given``, ``maxwell``,
+``zehner_schlunder``), gas emissivity (``johansson2011``, ``smith1982``, a constant, or seed
+004's line :math:`\max(a + bT, \varepsilon_{min})`). See docs/heat.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+
+from rotarykiln.errors import InputError
+from rotarykiln.heat.bed_conductivity import (
+    maxwell_bed_conductivity,
+    zehner_schlunder_bed_conductivity,
+)
+from rotarykiln.heat.contact import (
+    li_covered_wall_h,
+    tscheng_covered_wall_h,
+    wachters_kramers_covered_wall_h,
+)
+from rotarykiln.heat.convection import (
+    gas_reynolds,
+    gorog_gas_bed_h,
+    gorog_gas_wall_h,
+    rotational_reynolds,
+    tscheng_watkinson_gas_bed_nusselt,
+    tscheng_watkinson_gas_wall_nusselt,
+)
+from rotarykiln.heat.gas_radiation import johansson_wsgg_emissivity, smith_wsgg_emissivity
+from rotarykiln.heat.radiation import freeboard_radiation
+from rotarykiln.kiln.model import Closures
+from rotarykiln.materials.gas import GasPropertyTable
+
+__all__ = [
+    "FreeboardGas",
+    "TableGas",
+    "BulkBed",
+    "CrossSectionExchange",
+    "cell_report",
+    "FLOW_KEYS",
+    "EPS_GAS_MAX",
+]
+
+#: Keys of the heat flows (W/m) returned by :meth:`CrossSectionExchange.flows`.
+FLOW_KEYS = (
+    "q_gas_wall_conv",
+    "q_gas_bed_conv",
+    "q_covered_wall_bed",
+    "q_rad_to_wall",
+    "q_rad_to_bed",
+)
+#: Cap of the gas emissivity (grey gas, absorptivity = emissivity).
+EPS_GAS_MAX = 0.95
+
+
+class FreeboardGas(Protocol):
+    """Gas properties in the cells, as the exchange closures need them (SI units).
+
+    ``mass_flux`` (kg/(m2 s), over the freeboard area); ``transport(T)`` -> conductivity
+    (W/(m K)) and viscosity (Pa s); ``conductivity(T)``; ``density(T)`` (kg/m3); ``cp(T)``
+    (J/(kg K)); ``partial_pressures()`` -> H2O and CO2 partial pressures (Pa). ``T`` has the
+    shape of the cell-mean temperatures (any leading batch axes).
+    """
+
+    mass_flux: np.ndarray | float
+
+    def transport(self, T) -> tuple[np.ndarray, np.ndarray]: ...
+
+    def conductivity(self, T) -> np.ndarray: ...
+
+    def density(self, T) -> np.ndarray: ...
+
+    def cp(self, T) -> np.ndarray: ...
+
+    def partial_pressures(self) -> tuple: ...
+
+
+@dataclass(frozen=True)
+class TableGas:
+    """A gas of fixed composition (:class:`~rotarykiln.materials.gas.GasPropertyTable`).
+
+    ``table``, ``pressure`` (Pa), ``mass_flux`` (kg/(m2 s)).
+
+    Examples
+    --------
+    >>> from rotarykiln.materials.gas import air_table
+    >>> g = TableGas(air_table(), 101325.0, 1.0)
+    >>> round(float(g.density(300.0)), 3), g.partial_pressures()
+    (1.177, (0.0, 0.0))
+    """
+
+    table: GasPropertyTable
+    pressure: float
+    mass_flux: np.ndarray | float
+
+    def transport(self, T):
+        return self.table.conductivity(T), self.table.viscosity(T)
+
+    def conductivity(self, T):
+        return self.table.conductivity(T)
+
+    def density(self, T):
+        return self.table.density(T, self.pressure)
+
+    def cp(self, T):
+        return self.table.cp(T)
+
+    def partial_pressures(self):
+        return self.table.x_h2o * self.pressure, self.table.x_co2 * self.pressure
+
+
+@dataclass(frozen=True)
+class BulkBed:
+    """A bed of constant properties (the reacting kiln's), read like a
+    :class:`~rotarykiln.materials.solids.Solid` by :class:`CrossSectionExchange`.
+
+    ``bulk_density`` (kg/m3), ``specific_heat`` (J/(kg K)), ``particle_diameter`` (m),
+    ``emissivity`` (-), ``bed_conductivity`` (W/(m K), the given bulk value). Without a solid
+    conductivity and void fraction only the ``given`` bed-conductivity closure applies.
+
+    Examples
+    --------
+    >>> BulkBed(1680.0, 1040.0, 5e-3, 0.95, 0.69).cp(1000.0)
+    1040.0
+    """
+
+    bulk_density: float
+    specific_heat: float
+    particle_diameter: float
+    emissivity: float
+    bed_conductivity: float
+    solid_conductivity = None
+    void_fraction = None
+
+    def cp(self, T):
+        """Specific heat, J/(kg K) (constant)."""
+        return self.specific_heat
+
+
+@dataclass(frozen=True)
+class CrossSectionExchange:
+    """Heat flows per metre between gas, exposed wall, bed and covered wall of every cell.
+
+    The constant parts, built once per solve (:meth:`of` a kiln). ``closures``
+    (:class:`~rotarykiln.kiln.model.Closures`); ``geometry``: the cell geometry
+    (:class:`~rotarykiln.kiln.discretisation.Grid`: ``fill``, ``full_angle``, ``chord``,
+    ``exposed_wall``, ``covered_wall``, ``hydraulic_diameter``, ``beam_length``; arrays over
+    cells); ``length``, ``radius`` (m), ``omega`` (rad/s); ``eps_wall`` (-); ``bed``: a
+    :class:`~rotarykiln.materials.solids.Solid` or a :class:`BulkBed` (``emissivity``,
+    ``bulk_density`` kg/m3, ``cp(T)`` J/(kg K), ``particle_diameter`` m, ``bed_conductivity``
+    W/(m K) or None, ``solid_conductivity`` W/(m K) and ``void_fraction`` for the
+    bed-conductivity models); ``emissivity_law`` (a, b 1/K, min) for
+    :math:`\\varepsilon_g = \\max(a + bT, min)`, which replaces the closure's gas emissivity when
+    given.
+
+    Examples
+    --------
+    >>> from rotarykiln.kiln.discretisation import cell_grid
+    >>> from rotarykiln.materials.gas import air_table
+    >>> g = cell_grid(2.0, 0.1, 4, lambda z: np.full_like(z, 0.15))
+    >>> c = Closures(gas_bed="gorog1982", radiation=False)
+    >>> ex = CrossSectionExchange(c, g, 2.0, 0.1, 0.16, 0.9,
+    ...                           BulkBed(1650.0, 800.0, 7e-4, 0.9, 0.27))
+    >>> t = np.full(4, 500.0)
+    >>> q, co = ex.flows(TableGas(air_table(), 101325.0, 1.0), t, t - 100.0, t - 50.0)
+    >>> round(float(co["h_gb"][0]), 2)  # Gorog: 0.4 (3600 kg/(m2 h))^0.62
+    64.12
+    >>> round(float(q["q_gas_bed_conv"][0] / (co["h_gb"][0] * g.chord[0] * 100.0)), 12)
+    1.0
+    """
+
+    closures: Closures
+    geometry: object
+    length: float
+    radius: float
+    omega: float
+    eps_wall: float
+    bed: object
+    emissivity_law: tuple[float, float, float] | None = None
+
+    @classmethod
+    def of(cls, kiln, grid, bed, emissivity_law=None) -> CrossSectionExchange:
+        """For a kiln model with ``closures``, ``length``, ``radius``, ``omega``, ``eps_wall``."""
+        return cls(
+            kiln.closures,
+            grid,
+            kiln.length,
+            kiln.radius,
+            kiln.omega,
+            kiln.eps_wall,
+            bed,
+            emissivity_law,
+        )
+
+    def __post_init__(self):
+        c, b = self.closures, self.bed
+        if not isinstance(c, Closures):
+            raise InputError("closures", c, "a Closures object")
+        modelled = c.bed_conductivity != "given" or b.bed_conductivity is None
+        if modelled and (b.solid_conductivity is None or b.void_fraction is None):
+            raise InputError(
+                "closures.bed_conductivity",
+                c.bed_conductivity,
+                "given (with a bulk bed conductivity): this kiln has no solid conductivity "
+                "and void fraction for a bed-conductivity model",
+            )
+
+    def bed_conductivity_at(self, gas: FreeboardGas, t_film):
+        """Bed thermal conductivity (W/(m K)) by the ``bed_conductivity`` closure."""
+        c, b = self.closures.bed_conductivity, self.bed
+        if c == "given" and b.bed_conductivity is not None:
+            return b.bed_conductivity
+        if c == "maxwell":
+            return maxwell_bed_conductivity(
+                gas.conductivity(t_film), b.solid_conductivity, 1.0 - b.void_fraction
+            )
+        return zehner_schlunder_bed_conductivity(
+            gas.conductivity(t_film), b.solid_conductivity, b.void_fraction
+        )
+
+    def gas_emissivity(self, gas: FreeboardGas, t_gas, check=False):
+        """Gas emissivity (-) by the ``gas_emissivity`` closure, capped at 0.95 (the number 0
+        without radiation or without CO2 and H2O)."""
+        c = self.closures
+        if not c.radiation:
+            return 0.0
+        if self.emissivity_law is not None:
+            a, b, lo = self.emissivity_law
+            eps = np.maximum(a + b * t_gas, lo)
+        elif not isinstance(c.gas_emissivity, str):
+            eps = float(c.gas_emissivity) * np.ones_like(t_gas)
+        else:
+            p_w, p_c = gas.partial_pressures()
+            L = self.geometry.beam_length
+            p_sum = p_w + p_c
+            if p_sum <= 0 if np.ndim(p_sum) == 0 else not np.any(p_sum > 0):
+                return 0.0  # no CO2 and no H2O: transparent
+            if c.gas_emissivity == "johansson2011":
+                eps = johansson_wsgg_emissivity(t_gas, p_w, p_c, L, check=check)
+            else:
+                eps = smith_wsgg_emissivity(t_gas, (p_w + p_c) * L, "pw/pc=2", check=check)
+        return np.clip(eps, 0.0, EPS_GAS_MAX)
+
+    def coefficients(self, gas: FreeboardGas, t_gas, t_bed, t_wall, check=False) -> dict:
+        """Heat transfer coefficients (W/(m2 K)), gas emissivity and Reynolds number.
+
+        With ``check`` the closures validate their inputs and warn
+        (:class:`~rotarykiln.errors.OutOfRangeWarning`) outside their validated ranges; the
+        solvers do this once on the converged state, not inside the Newton loop.
+        """
+        c, g = self.closures, self.geometry
+        tg, tb, tw = t_gas, t_bed, t_wall
+        kg, mu = gas.transport(tg)
+        De = g.hydraulic_diameter
+        re = gas_reynolds(gas.mass_flux, De, mu)
+        if "tscheng1979" in (c.gas_wall, c.gas_bed):
+            re_w = rotational_reynolds(gas.density(tg), self.omega, De, mu)
+        if c.gas_wall == "tscheng1979":
+            h_gw = tscheng_watkinson_gas_wall_nusselt(re, re_w, check=check) * kg / De
+        else:
+            pr = gas.cp(tg) * mu / kg
+            h_gw = gorog_gas_wall_h(kg, De, re, pr, self.length, check=check)
+        if c.gas_bed == "tscheng1979":
+            h_gb = tscheng_watkinson_gas_bed_nusselt(re, re_w, g.fill, check=check) * kg / De
+        else:
+            h_gb = gorog_gas_bed_h(gas.mass_flux, check=check) * np.ones_like(tg)
+        t_film = 0.5 * (tw + tb)
+        kb = self.bed_conductivity_at(gas, t_film)
+        rho_c = self.bed.bulk_density * self.bed.cp(tb)
+        if c.covered_wall == "li2005":
+            h_cw = li_covered_wall_h(
+                gas.conductivity(t_film),
+                self.bed.particle_diameter,
+                kb,
+                rho_c,
+                self.omega,
+                g.full_angle,
+                check=check,
+            )
+        elif c.covered_wall == "tscheng1979":
+            h_cw = tscheng_covered_wall_h(
+                kb, rho_c, self.omega, self.radius, g.full_angle, check=check
+            )
+        else:
+            h_cw = wachters_kramers_covered_wall_h(kb, rho_c, self.omega, g.full_angle, check=check)
+        eps = self.gas_emissivity(gas, tg, check=check)
+        if np.shape(h_cw) != np.shape(tg):
+            h_cw = h_cw * np.ones_like(tg)
+        return {
+            "h_gw": h_gw,
+            "h_gb": h_gb,
+            "h_cw": h_cw,
+            "eps_gas": eps,
+            "Re": re,
+        }
+
+    def flows(self, gas: FreeboardGas, t_gas, t_bed, t_wall, radiation_scale=1.0):
+        """Heat flows per metre (W/m, keys :data:`FLOW_KEYS`) and the coefficients.
+
+        ``q_gas_wall_conv`` gas -> exposed wall, ``q_gas_bed_conv`` gas -> bed surface,
+        ``q_covered_wall_bed`` covered wall -> bed, ``q_rad_to_wall`` and ``q_rad_to_bed``
+        net radiation absorbed by the exposed wall and the bed (their sum is the gas's loss),
+        scaled by ``radiation_scale`` (continuation).
+        """
+        g = self.geometry
+        tg, tb, tw = t_gas, t_bed, t_wall
+        co = self.coefficients(gas, tg, tb, tw)
+        q_gw = co["h_gw"] * g.exposed_wall * (tg - tw)
+        q_gb = co["h_gb"] * g.chord * (tg - tb)
+        q_cw = co["h_cw"] * g.covered_wall * (tw - tb)
+        if self.closures.radiation:
+            q_rw, q_rb = freeboard_radiation(
+                tg,
+                tw,
+                tb,
+                co["eps_gas"],
+                self.eps_wall,
+                self.bed.emissivity,
+                g.exposed_wall,
+                g.chord,
+                check=False,
+            )
+            q_rw = radiation_scale * q_rw
+            q_rb = radiation_scale * q_rb
+        else:
+            q_rw = q_rb = 0.0 * tg
+        flows = dict(zip(FLOW_KEYS, (q_gw, q_gb, q_cw, q_rw, q_rb), strict=True))
+        return flows, co
+
+
+def cell_report(t_bed, t_gas, flows: dict, q_loss, coefficients: dict, **sources) -> dict:
+    """The per-cell dict a kiln residual reports: cell-mean temperatures (``t_bed_mean``,
+    ``t_gas_mean``, K), the exchange ``flows`` and the shell loss ``q_shell_loss`` (W/m), the
+    model's own ``sources`` (W/m), then the ``coefficients``."""
+    return {
+        "t_bed_mean": t_bed,
+        "t_gas_mean": t_gas,
+        **flows,
+        "q_shell_loss": q_loss,
+        **sources,
+        **coefficients,
+    }

@@ -1,0 +1,63 @@
+"""What the two kiln solutions share: the temperature-profile plot and the heat-flow columns."""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["plot_temperature_profiles", "heat_flow_columns"]
+
+_MEASURED = (("gas", "tab:red", "o"), ("bed", "tab:brown", "s"), ("wall", "tab:gray", "^"))
+
+
+def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
+    """Gas, bed, inner wall (and shell) temperatures along the kiln, measured points if any.
+
+    ``sol`` has ``z_nodes``, ``t_gas_nodes``, ``t_bed_nodes`` (faces), ``z``, ``t_wall``
+    (cells) and ``name``; ``t_shell`` (K, cells) and ``measurements`` (``z_gas``, ``t_gas``,
+    ... arrays) are drawn when given. Returns the Axes.
+    """
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7, 4.2))
+    ax.plot(sol.z_nodes, sol.t_gas_nodes, color="tab:red", label="gas")
+    ax.plot(sol.z_nodes, sol.t_bed_nodes, color="tab:brown", label="bed")
+    ax.plot(sol.z, sol.t_wall, color="tab:gray", label="inner wall")
+    if t_shell is not None:
+        ax.plot(sol.z, t_shell, color="tab:blue", ls="--", label="shell")
+    m = measurements or {}
+    for key, color, marker in _MEASURED:
+        if f"z_{key}" in m and f"t_{key}" in m:
+            ax.plot(
+                m[f"z_{key}"],
+                m[f"t_{key}"],
+                ls="none",
+                marker=marker,
+                mfc="none",
+                color=color,
+                label=f"{key}, measured",
+            )
+    ax.set_xlabel("z from solids inlet (m)")
+    ax.set_ylabel("temperature (K)")
+    ax.set_title(sol.name)
+    ax.legend(fontsize=8, ncol=2)
+    return ax
+
+
+def heat_flow_columns(fluxes: dict, at=None) -> dict:
+    """Columns ``<q_key>_W_per_m`` of the per-cell heat flows in ``fluxes``.
+
+    ``at``: a callable mapping a per-cell array to the rows of the frame (e.g. interpolation to
+    the faces), or None to keep one row per cell.
+
+    Examples
+    --------
+    >>> heat_flow_columns({"q_shell_loss": np.array([1.0, 2.0]), "h_gw": 3.0})
+    {'q_shell_loss_W_per_m': array([1., 2.])}
+    """
+    out = {}
+    for key, value in fluxes.items():
+        if key.startswith("q_"):
+            v = np.asarray(value)
+            out[f"{key}_W_per_m"] = v if at is None else at(v)
+    return out

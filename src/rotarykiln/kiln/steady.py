@@ -1,0 +1,156 @@
+"""Driver shared by the two steady kilns (heat model, reacting model).
+
+- :func:`initial_temperatures`: the linear bed/gas/wall guess both solvers start from;
+- :func:`equation_names` and :func:`locator`: what each unknown's balance is called, for
+  error messages;
+- :func:`newton_with_continuation`: banded Newton from the guess, and on failure a
+  continuation, given as a list of :func:`ramp` stages (a parameter of the residual ramped
+  0 -> 1, in fixed or adaptive steps);
+- :func:`check_finite`: no non-finite value leaves a solver;
+- :func:`profile_fields`: the temperature profiles and solver figures both solutions hold.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+from rotarykiln.errors import ConvergenceError
+from rotarykiln.kiln import newton
+
+__all__ = [
+    "initial_temperatures",
+    "equation_names",
+    "locator",
+    "ramp",
+    "newton_with_continuation",
+    "check_finite",
+    "profile_fields",
+    "FIXED_STEPS",
+]
+
+#: Fixed continuation steps (radiation, heat release).
+FIXED_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
+
+
+def initial_temperatures(z_nodes, t_feed, t_hot, wall, counter_current=True):
+    """Linear initial guess: bed (faces 1..n), gas (its n outlet faces), wall (cells), K.
+
+    The bed warms from ``t_feed`` by 0.6 of the span to the hot gas ``t_hot`` along the kiln;
+    the gas cools from ``t_hot`` by half the span; the inner wall sits between them and the
+    wall model (``wall.initial_guess``) fills its other temperatures.
+
+    Examples
+    --------
+    >>> from rotarykiln.kiln.wall import ConstantUWall
+    >>> tb, tg, tw = initial_temperatures(np.linspace(0, 1, 3), 300.0, 1300.0,
+    ...                                   ConstantUWall(5.0, 1.0, 300.0))
+    >>> tb.tolist(), tg.tolist(), tw[:, 0].tolist()
+    ([600.0, 900.0], [800.0, 1050.0], [700.0, 975.0])
+    """
+    z_nodes = np.asarray(z_nodes, dtype=float)
+    zeta = z_nodes / z_nodes[-1]
+    t_b = t_feed + 0.6 * (t_hot - t_feed) * zeta[1:]
+    if counter_current:
+        t_g = t_hot - 0.5 * (t_hot - t_feed) * (1.0 - zeta[:-1])
+    else:
+        t_g = t_hot - 0.5 * (t_hot - t_feed) * zeta[1:]
+    return t_b, t_g, wall.initial_guess(0.5 * (t_b + t_g))
+
+
+def equation_names(wall, extra: Sequence[str] = ()) -> list[str]:
+    """Names of the balances of a cell: bed and gas energy, the wall's, then ``extra``."""
+    return ["bed energy", "gas energy", *wall.labels(), *extra]
+
+
+def locator(z, names: Sequence[str]) -> Callable[[int, int], str]:
+    """``where(j, v)`` -> "cell j (z = ... m), <names[v]>" for :class:`ConvergenceError`."""
+
+    def where(j: int, v: int) -> str:
+        return f"cell {j} (z = {z[j]:.4g} m), {names[v]}"
+
+    return where
+
+
+def ramp(set_parameter: Callable[[float], None], steps=FIXED_STEPS, *, adaptive=False):
+    """A continuation stage: ``set_parameter`` ramped over ``steps`` (fixed values), or from
+    0 to 1 in adaptive steps (start 0.25, halved on failure down to 1/256, doubled on success
+    up to 0.5) when ``adaptive``. Returns a callable ``stage(F, x, scale, kw) -> (x, iters)``.
+    """
+
+    def fixed(F, x, scale, kw):
+        total = 0
+        for value in steps:
+            set_parameter(value)
+            x, rep = newton.newton_banded(F, x, scale, **kw)
+            total += rep.iterations
+        return x, total
+
+    def stepped(F, x, scale, kw):
+        total, lam, step = 0, 0.0, 0.25
+        while lam < 1.0:
+            trial = min(1.0, lam + step)
+            set_parameter(trial)
+            try:
+                x_new, rep = newton.newton_banded(F, x, scale, **kw)
+            except ConvergenceError:
+                step /= 2.0
+                if step < 1.0 / 256:
+                    set_parameter(1.0)
+                    raise
+                continue
+            total += rep.iterations
+            x, lam = x_new, trial
+            step = min(0.5, step * 2.0)
+        return x, total
+
+    return stepped if adaptive else fixed
+
+
+def newton_with_continuation(F, x0, scale, continuation, **kw):
+    """Newton from ``x0``; if it fails, ``continuation(F, x0, scale, kw) -> (x, iterations)``.
+
+    Returns ``(x, total Newton iterations)``. ``kw`` go to
+    :func:`rotarykiln.kiln.newton.newton_banded`.
+    """
+    try:
+        x, rep = newton.newton_banded(F, x0, scale, **kw)
+        return x, rep.iterations
+    except ConvergenceError:
+        return continuation(F, np.array(x0, dtype=float), scale, kw)
+
+
+def check_finite(profiles: dict, per_cell: dict, z, iterations: int) -> None:
+    """Raise :class:`ConvergenceError` if a profile or a per-cell array is not finite."""
+    for name, arr in profiles.items():
+        if not np.all(np.isfinite(arr)):
+            raise ConvergenceError(f"non-finite {name} in the solution", iterations=iterations)
+    for key, arr in per_cell.items():
+        if not np.all(np.isfinite(arr)):
+            j = int(np.argmax(~np.isfinite(arr)))
+            raise ConvergenceError(
+                f"non-finite {key} in cell {j} (z = {z[j]:.4g} m)", iterations=iterations
+            )
+
+
+def profile_fields(grid, t_bed_nodes, t_gas_nodes, t_wall, fluxes: dict, R, scale, iterations):
+    """Fields shared by both kiln solutions: faces and cells, temperatures, fluxes, solver.
+
+    ``t_wall``: the wall unknowns (K, ``(n, n_wall)``, inner surface first); ``fluxes``: the
+    per-cell dict of the residual (its ``t_bed_mean`` and ``t_gas_mean`` become ``t_bed`` and
+    ``t_gas``); ``R``: the final residual, judged against ``scale``.
+    """
+    return dict(
+        z_nodes=grid.z_nodes,
+        t_bed_nodes=np.asarray(t_bed_nodes, dtype=float),
+        t_gas_nodes=np.asarray(t_gas_nodes, dtype=float),
+        z=grid.z,
+        t_bed=fluxes.pop("t_bed_mean"),
+        t_gas=fluxes.pop("t_gas_mean"),
+        t_wall=t_wall[:, 0].copy(),
+        t_lining=t_wall.T.copy(),
+        fluxes=fluxes,
+        iterations=iterations,
+        residual=float(np.max(np.abs(R))) / scale,
+    )

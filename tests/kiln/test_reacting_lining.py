@@ -1,0 +1,178 @@
+"""The reacting kiln on the heat model's wall (lining with k(T), shell loss) and shared physics.
+
+The two kilns share the cross-section exchange (kiln/exchange.py) and the wall model
+(kiln/wall.py). With no reaction (an inert feed) the reacting kiln must therefore reproduce the
+heat model on the same kiln: same geometry, lining, closures, a constant-c_p solid and a
+one-species gas (the reacting kiln mixes its gas from the same per-species Cantera tables, so a
+pure gas has identical properties). The two discretise the same balances with the same scheme;
+they differ only by round-off (measured ~1e-12 K), far inside the 1e-6 K asserted here.
+"""
+
+import copy
+import dataclasses
+import warnings
+
+import matplotlib
+import numpy as np
+import pytest
+import yaml
+
+from rotarykiln.case import parse_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.chemistry.mechanism import Mechanism
+from rotarykiln.errors import InputError, OutOfRangeWarning
+from rotarykiln.kiln.model import Closures
+from rotarykiln.kiln.reacting import reacting_kiln_from_case, reacting_runner, run_reacting_case
+from rotarykiln.kiln.reacting_model import ReactingKiln
+from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.kiln.solve import solve_heat
+from rotarykiln.kiln.tscheng import tscheng_kiln
+from rotarykiln.materials.gas import gas_table
+from rotarykiln.materials.solids import Solid
+
+matplotlib.use("Agg")
+
+LINING = [
+    {"material": "fireclay_brick", "thickness": "0.1 m"},
+    {"material": "carbon_steel", "thickness": "8 mm"},
+]
+
+
+def _data(name):
+    return yaml.safe_load(builtin_case_path(name).read_text(encoding="utf-8"))
+
+
+def _lined(name):
+    data = _data(name)
+    ch = data["chemistry"]
+    ch["lining"] = copy.deepcopy(LINING)
+    ch["ambient_temperature"] = ch.pop("wall_loss")["ambient_temperature"]
+    return data
+
+
+@pytest.fixture(scope="module")
+def lined_limestone():
+    return run_reacting_case(parse_case(_lined("limestone_calcination")))
+
+
+def test_lined_reacting_kiln_converges_and_closes(lined_limestone):
+    sol = lined_limestone
+    assert abs(sol.energy_closure) < 1e-6
+    assert max(sol.element_closure.values()) < 1e-8
+    assert sol.conversion("CaCO3")[-1] == pytest.approx(1.0, abs=1e-9)
+    # inner wall, brick/steel interface, shell: falling outwards, shell above ambient
+    assert sol.t_lining.shape == (3, 100)
+    assert np.all(np.diff(sol.t_lining, axis=0) < 0)
+    assert np.all(sol.t_shell > 298.0)
+    frame = sol.to_frame()
+    assert "T_shell_K" in frame and np.all(np.isfinite(frame.to_numpy(dtype=float)))
+    # the shell loss is what the wall rows pass outwards
+    assert sol.shell_loss == pytest.approx(np.sum(sol.fluxes["q_shell_loss"]) * 5.5 / 100)
+
+
+def test_charcoal_with_a_lining_closes():
+    sol = run_reacting_case(parse_case(_lined("charcoal_activation")))
+    assert abs(sol.energy_closure) < 1e-6
+    assert max(sol.element_closure.values()) < 1e-8
+    assert 0 < sol.burn_off < 100
+
+
+def test_constant_u_stays_the_default_and_is_selectable():
+    data = _data("limestone_calcination")
+    seed, _ = reacting_kiln_from_case(parse_case(data))
+    assert seed.layers == () and seed.wall_loss_u == 7.0
+    both = copy.deepcopy(data)
+    both["chemistry"]["lining"] = copy.deepcopy(LINING)
+    lined, _ = reacting_kiln_from_case(parse_case(both))
+    assert len(lined.layers) == 2  # a lining given: the lined wall by default
+    both["chemistry"]["wall"] = "wall_u"
+    chosen, _ = reacting_kiln_from_case(parse_case(both))
+    assert chosen.layers == () and chosen.wall_loss_u == 7.0
+    a, b = solve_reacting(seed, 40), solve_reacting(chosen, 40)
+    assert np.array_equal(a.t_bed_nodes, b.t_bed_nodes)
+
+
+@pytest.mark.parametrize(
+    "edit, field",
+    [
+        ({"wall": "lining"}, "chemistry.lining"),  # no lining given
+        ({"lining": []}, "chemistry.lining"),
+        ({"ambient_temperature": "310 K"}, "chemistry.ambient_temperature"),  # 298 K in wall_loss
+        ({"closures": {"bed_conductivity": "maxwell"}}, "chemistry.closures.bed_conductivity"),
+    ],
+)
+def test_wall_inputs_refused(edit, field):
+    data = _data("limestone_calcination")
+    data["chemistry"].update(edit)
+    with pytest.raises(InputError, match=field):
+        reacting_kiln_from_case(parse_case(data))
+
+
+def test_runner_writes_the_shell_temperature(tmp_path):
+    summary = reacting_runner(parse_case(_lined("charcoal_activation")), tmp_path)
+    assert abs(summary["reacting_energy_balance_closure"]) < 1e-6
+    header = (tmp_path / "reacting_profiles.csv").read_text().splitlines()[0]
+    assert "T_shell_K" in header
+
+
+def _same_kiln(gas: str, closures: Closures, t_gas: float | None):
+    """The Tscheng A16 kiln (3 layers, insulation absent on a stretch) as both models."""
+    solid = Solid("inert sand", 1650.0, 2650.0, 7.3e-4, 0.9, cp_const=800.0, bed_conductivity=0.27)
+    base = tscheng_kiln("A16")
+    heat = dataclasses.replace(
+        base,
+        solid=solid,
+        gas=gas_table(f"{gas}:1"),
+        gas_inlet_temperature=t_gas or base.gas_inlet_temperature,
+        closures=closures,
+        measurements=None,
+    )
+    # calcination has nothing to calcine: the feed is inert, every rate is zero
+    mech = Mechanism.builtin("calcination_luisser")
+    reacting = ReactingKiln(
+        length=heat.length,
+        radius=heat.radius,
+        omega=heat.omega,
+        fill=heat.fill,
+        bed_velocity=0.002,
+        feed={"inert": heat.solids_flow},
+        feed_temperature=heat.solids_inlet_temperature,
+        bed_cp={s: 800.0 for s in mech.species.bed_names},
+        bulk_density=solid.bulk_density,
+        bed_conductivity=0.27,
+        bed_emissivity=solid.emissivity,
+        particle_diameter=solid.particle_diameter,
+        gas_in={gas: heat.gas_flow},
+        gas_inlet_temperature=heat.gas_inlet_temperature,
+        mechanism=mech,
+        layers=heat.layers,
+        ambient_temperature=heat.ambient_temperature,
+        closures=closures,
+    )
+    return heat, reacting
+
+
+@pytest.mark.parametrize(
+    "gas, closures, t_gas",
+    [
+        ("N2", Closures(), None),  # Tscheng convection, Li covered wall
+        ("N2", Closures(gas_wall="gorog1982", gas_bed="gorog1982"), None),
+        ("CO2", Closures(), 1100.0),  # Johansson WSGG gas radiation
+        ("CO2", Closures(gas_emissivity="smith1982", covered_wall="wachters_kramers1964"), 1100),
+        ("N2", Closures(gas_emissivity=0.2, covered_wall="tscheng1979"), 1100.0),
+    ],
+)
+def test_inert_reacting_kiln_equals_the_heat_model(gas, closures, t_gas):
+    heat, reacting = _same_kiln(gas, closures, t_gas)
+    with warnings.catch_warnings():
+        # pure CO2 lies outside Johansson's H2O/CO2 ratio range: both models warn alike
+        warnings.simplefilter("ignore", OutOfRangeWarning)
+        a = solve_heat(heat, 100)
+        b = solve_reacting(reacting, 100)
+    assert max(abs(v) for v in b.bed_flows["CaCO3"]) == 0.0  # nothing reacted
+    assert abs(b.energy_closure) < 1e-6 and max(b.element_closure.values()) < 1e-8
+    assert np.max(np.abs(a.t_bed_nodes - b.t_bed_nodes)) < 1e-6
+    assert np.max(np.abs(a.t_gas_nodes - b.t_gas_nodes)) < 1e-6
+    assert np.max(np.abs(a.t_lining - b.t_lining)) < 1e-6  # wall, interfaces and shell
+    assert a.shell_loss == pytest.approx(b.shell_loss, rel=1e-9)
+    assert a.bed_outlet_temperature - heat.solids_inlet_temperature > 50.0  # a real heating
