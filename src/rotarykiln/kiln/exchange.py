@@ -270,9 +270,9 @@ class CrossSectionExchange:
         tg, tb, tw = t_gas, t_bed, t_wall
         kg, mu = gas.transport(tg)
         De = g.hydraulic_diameter
-        re = gas_reynolds(gas.mass_flux, De, mu)
+        re = gas_reynolds(gas.mass_flux, De, mu, check=check)
         if "tscheng1979" in (c.gas_wall, c.gas_bed):
-            re_w = rotational_reynolds(gas.density(tg), self.omega, De, mu)
+            re_w = rotational_reynolds(gas.density(tg), self.omega, De, mu, check=check)
         if c.gas_wall == "tscheng1979":
             h_gw = tscheng_watkinson_gas_wall_nusselt(re, re_w, check=check) * kg / De
         else:

@@ -117,6 +117,7 @@ class LinedWall:
                     mat.conductivity_integral(tl[..., i + 1]),
                     self.radii[i],
                     self.radii[i + 1],
+                    check=False,  # layer thicknesses are checked > 0 when the layers are built
                 )
             )
         q_loss = shell_heat_loss(
