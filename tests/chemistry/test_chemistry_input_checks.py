@@ -52,3 +52,11 @@ def test_segregated_average_rejects_a_non_integer_grid():
         segregated.segregated_average(
             lambda t: 1 - np.exp(-t), lambda t: np.exp(-t), t_max=10.0, n=float("nan")
         )
+
+
+def test_empty_mechanism_is_refused():
+    from rotarykiln.chemistry.mechanism import Mechanism
+    from rotarykiln.errors import InputError
+
+    with pytest.raises(InputError, match="at least one reaction"):
+        Mechanism([])

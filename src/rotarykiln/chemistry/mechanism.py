@@ -238,6 +238,8 @@ class Mechanism:
 
     def __post_init__(self):
         names = [r.name for r in self.reactions]
+        if not names:
+            raise InputError("mechanism.reactions", "[]", "at least one reaction")
         if len(set(names)) != len(names):
             raise InputError("mechanism.reactions", names, "unique reaction names")
         for r in self.reactions:
