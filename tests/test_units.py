@@ -1,4 +1,5 @@
 import math
+import re
 
 import pytest
 
@@ -40,4 +41,58 @@ def test_to_si(text, kind, expected):
 )
 def test_to_si_errors(text, kind, message):
     with pytest.raises(InputError, match=message.replace("(", r"\(")):
+        to_si("x", text, kind)
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "expected"),
+    [
+        # spellings engineers type that pint alone does not read
+        ("1.5 RPM", "rotation rate", 1.5 * 2 * math.pi / 60),
+        ("1.5 rev/min", "rotation rate", 1.5 * 2 * math.pi / 60),
+        ("1.5 r/min", "rotation rate", 1.5 * 2 * math.pi / 60),
+        ("1.5 U/min", "rotation rate", 1.5 * 2 * math.pi / 60),
+        ("62 kg/hr", "mass flow", 62 / 3600),
+        ("1.2 tph", "mass flow", 1200 / 3600),
+        ("2 degrees", "angle", math.radians(2)),
+        ("2 DEG", "angle", math.radians(2)),
+        ("1100 C", "temperature", 1373.15),
+        ("1100 deg C", "temperature", 1373.15),
+        ("212 F", "temperature", 373.15),
+        ("1.2 W/mK", "thermal conductivity", 1.2),
+        ("1.2 W/m.K", "thermal conductivity", 1.2),
+        ("10 W/m2K", "heat transfer coefficient", 10.0),
+        ("10 W/m^2K", "heat transfer coefficient", 10.0),
+        ("1 kJ/kgK", "specific heat", 1000.0),
+        ("1 kJ/kg-K", "specific heat", 1000.0),
+    ],
+)
+def test_to_si_common_spellings(text, kind, expected):
+    assert to_si("x", text, kind) == pytest.approx(expected)
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "message"),
+    [
+        # "0,4 m" used to become 0 m silently (pint reads the comma as a separator)
+        ("0,4 m", "length", 'x: "0,4 m" has a comma; use a decimal point'),
+        ("1,500 kg/m3", "density", "has a comma"),
+        # unknown unit: name it and say what is accepted
+        (
+            "1.5 rmp",
+            "rotation rate",
+            'x: "1.5 rmp" has an unknown unit "rmp", expected a rotation rate (rpm',
+        ),
+        # a number without unit is not silently "a fraction"
+        ("1.5", "rotation rate", 'x: "1.5" needs a unit, expected a rotation rate (rpm'),
+        ("1100", "temperature", 'x: "1100" needs a unit, expected a temperature (K, degC, degF)'),
+        # pint counts radians as 1: "1/min" and "Hz" would be rad per time, 2 pi off from rpm
+        ("1.5 1/min", "rotation rate", "does not say revolutions or radians"),
+        ("0.1 Hz", "rotation rate", "does not say revolutions or radians"),
+        # "C" is coulomb outside temperatures
+        ("3 C", "length", "expected a length (m, cm, mm)"),
+    ],
+)
+def test_to_si_errors_name_the_unit_and_what_is_accepted(text, kind, message):
+    with pytest.raises(InputError, match=re.escape(message)):
         to_si("x", text, kind)

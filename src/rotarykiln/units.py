@@ -69,7 +69,81 @@ KINDS: dict[str, Kind] = {
     ]
 }
 
-_ANGLE_UNITS = ("degree", "radian", "arcminute", "arcsecond", "revolution", "turn", "gradian")
+_ANGLE_UNITS = (
+    "degree",
+    "radian",
+    "arcminute",
+    "arcsecond",
+    "revolution",
+    "turn",
+    "gradian",
+    "rpm",
+)
+
+#: Units an engineer would type for each kind, quoted in error messages.
+EXAMPLES: dict[str, str] = {
+    "length": "m, cm, mm",
+    "area": "m2, cm2",
+    "volume": "m3, L",
+    "time": "s, min, h",
+    "mass": "kg, t",
+    "angle": "deg, rad, or % / m/m for a grade",
+    "rotation rate": "rpm, rad/s",
+    "velocity": "m/s",
+    "mass flow": "kg/h, kg/s, t/h",
+    "volumetric flow": "m3/h, m3/s",
+    "temperature": "K, degC, degF",
+    "density": "kg/m3",
+    "pressure": "Pa, kPa, bar, atm",
+    "power": "W, kW, MW",
+    "power per length": "W/m, kW/m",
+    "heat flux": "W/m2, kW/m2",
+    "heat transfer coefficient": "W/m2/K",
+    "thermal conductivity": "W/m/K",
+    "specific heat": "J/kg/K, kJ/kg/K",
+    "specific energy": "J/kg, kJ/kg, MJ/kg",
+    "molar energy": "J/mol, kJ/mol",
+    "diffusivity": "m2/s",
+    "frequency": "1/s, Hz",
+    "fraction": "a number such as 0.15, or 15 %",
+}
+
+# Whole unit strings engineers type that pint does not know (matched ignoring case and spaces).
+_ALIASES = {
+    "rpm": "rpm",
+    "r/min": "rpm",
+    "rev/min": "rpm",
+    "revs/min": "rpm",
+    "u/min": "rpm",
+    "rev/s": "revolution/s",
+    "r/s": "revolution/s",
+    "deg": "deg",
+    "degs": "deg",
+    "degree": "deg",
+    "degrees": "deg",
+    "tph": "t/h",
+    "t/hr": "t/h",
+    "kg/hr": "kg/h",
+}
+# Temperature only: "C" is coulomb and "F" farad to pint, never a temperature.
+_TEMPERATURE_ALIASES = {
+    "c": "degC",
+    "°c": "degC",
+    "degc": "degC",
+    "degreec": "degC",
+    "degreesc": "degC",
+    "celsius": "degC",
+    "f": "degF",
+    "°f": "degF",
+    "degf": "degF",
+    "degreesf": "degF",
+    "fahrenheit": "degF",
+    "k": "K",
+    "kelvin": "K",
+}
+# "W/mK", "W/m.K", "W/m2K", "J/kgK", "kJ/kg-K": per (length, area or mass) times kelvin.
+_PER_X_KELVIN = re.compile(r"/\s*\(?\s*(kg|g|m\*\*2|m\^2|m²|m)\s*[.·*\-]?\s*K\s*\)?$")
+_PER_KELVIN_KINDS = ("thermal conductivity", "heat transfer coefficient", "specific heat")
 
 
 @lru_cache(maxsize=64)
@@ -90,9 +164,17 @@ def _describe(q: pint.Quantity) -> str:
 
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 _BARE_POWER = re.compile(r"(?<=[A-Za-z])([23])(?![\d.])")
+_DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d*,\d")
 
 
-def _normalise(text: str) -> tuple[str, bool]:
+def _alias(unit: str, kind: str | None) -> str:
+    key = re.sub(r"\s+", "", unit).lower()
+    if kind == "temperature" and key in _TEMPERATURE_ALIASES:
+        return _TEMPERATURE_ALIASES[key]
+    return _ALIASES.get(key, unit)
+
+
+def _normalise(text: str, kind: str | None = None) -> tuple[str, bool]:
     """Engineer-typed units to pint syntax ("kg/m3" -> "kg/m**3"); also says if unit-less."""
     m = _NUMBER.match(text)
     if not m:
@@ -100,19 +182,36 @@ def _normalise(text: str) -> tuple[str, bool]:
     number, unit = m.group(1), m.group(2)
     if not unit:
         return number, True
-    unit = _BARE_POWER.sub(r"**\1", unit)
+    unit = _BARE_POWER.sub(r"**\1", _alias(unit, kind))
+    if kind in _PER_KELVIN_KINDS:
+        unit = _PER_X_KELVIN.sub(r"/(\1*K)", unit)
     return f"{number} {unit}", False
 
 
-def _parse(field: str, text: str) -> pint.Quantity:
+def _expected(kind: str) -> str:
+    return f"expected {_article(kind)} {kind} ({EXAMPLES[kind]})"
+
+
+def _parse(field: str, text: str, kind: str) -> pint.Quantity:
+    if _DECIMAL_COMMA.match(text):
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" has a comma; use a decimal point and no thousands '
+            'separator (e.g. "0.4 m", "1500 kg/m3")',
+        )
+    normalised, unitless = _normalise(text, kind)
+    if unitless and kind not in ("fraction", "angle"):
+        raise InputError(field, message=f'{field}: "{text}" needs a unit, {_expected(kind)}')
     try:
-        q = ureg.Quantity(_normalise(text)[0])
+        q = ureg.Quantity(normalised)
     except Exception:  # pint raises many types for garbage: report them all the same way
+        m = _NUMBER.match(text)
+        what = f'has an unknown unit "{m.group(2)}"' if m else "is not a quantity with a unit"
         raise InputError(
             field,
             f'"{text}"',
             accepted="",
-            message=f'{field}: "{text}" is not a quantity with a unit',
+            message=f'{field}: "{text}" {what}, {_expected(kind)}',
         ) from None
     if not isinstance(q.magnitude, int | float) or not math.isfinite(float(q.magnitude)):
         raise InputError(field, message=f'{field}: "{text}" is not a finite number with a unit')
@@ -142,7 +241,7 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
     >>> to_si("speed", "3 m", "rotation rate")
     Traceback (most recent call last):
     ...
-    rotarykiln.errors.InputError: speed: "3 m" is a length, expected a rotation rate
+    rotarykiln.errors.InputError: speed: "3 m" is a length, expected a rotation rate (rpm, rad/s)
     """
     target = KINDS[kind]
     if isinstance(value, bool):
@@ -159,7 +258,7 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
         return float(value)
     if not isinstance(value, str):
         raise InputError(field, message=f"{field}: {value!r} is not a quantity with a unit")
-    q = _parse(field, value)
+    q = _parse(field, value, kind)
     if kind == "angle":
         units = str(q.units)
         if q.dimensionless and not any(a in units for a in _ANGLE_UNITS):
@@ -170,9 +269,13 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
                 )
             return math.atan(float(q.to("dimensionless").magnitude))  # a grade, rise over run
     if q.dimensionality != target.dimensionality:
+        raise InputError(field, message=f'{field}: "{value}" is {_describe(q)}, {_expected(kind)}')
+    if kind == "rotation rate" and not any(a in str(q.units) for a in _ANGLE_UNITS):
+        # pint counts radians as 1, so "1.5 1/min" or "0.1 Hz" would silently be rad per time;
+        # engineers mean revolutions. Ask rather than guess.
         raise InputError(
             field,
-            message=f'{field}: "{value}" is {_describe(q)}, expected {_article(target.name)} {target.name}',
+            message=f'{field}: "{value}" does not say revolutions or radians, {_expected(kind)}',
         )
     return float(q.to(target.si).magnitude)
 
