@@ -45,7 +45,8 @@ def test_good_case_is_converted_to_si():
         (
             "kiln.diamter",
             "0.4 m",
-            "kiln.diamter: unknown key (accepted keys: length, diameter, slope)",
+            'kiln.diamter: unknown key, did you mean "diameter"? '
+            "(accepted keys: length, diameter, slope)",
         ),
         ("material.repose_angle", "95 deg", "material.repose_angle: 95 deg is not in (0, 90) deg"),
     ],
@@ -98,3 +99,67 @@ def test_load_case_from_file(tmp_path):
     p = tmp_path / "c.yaml"
     p.write_text(textwrap.dedent(yaml.safe_dump(GOOD)))
     assert load_case(p).kiln.length == 5.5
+
+
+def renamed(path: str, new_key: str):
+    """GOOD with the key at ``path`` renamed (a typo in a key: the real key becomes missing)."""
+    data = yaml.safe_load(yaml.safe_dump(GOOD))
+    keys = path.split(".")
+    node = data
+    for k in keys[:-1]:
+        node = node[k]
+    node[new_key] = node.pop(keys[-1])
+    return data
+
+
+@pytest.mark.parametrize(
+    ("path", "typo", "message"),
+    [
+        # the typo is reported, not the "missing" key it causes
+        ("kiln", "kilm", 'kilm: unknown key, did you mean "kiln"?'),
+        ("kiln.diameter", "diamter", 'kiln.diamter: unknown key, did you mean "diameter"?'),
+        ("operation.speed", "sped", 'operation.sped: unknown key, did you mean "speed"?'),
+    ],
+)
+def test_misspelt_key_is_reported_before_the_missing_one(path, typo, message):
+    with pytest.raises(InputError) as info:
+        parse_case(renamed(path, typo))
+    assert str(info.value).startswith(message)
+
+
+HEAT = {"solid": "sand", "lining": [{"material": "fireclay_brick", "thickness": "50 mm"}]}
+
+
+def test_misspelt_key_in_a_list_item_lists_the_accepted_keys():
+    # the accepted keys used to be empty for keys inside list items (heat.lining.N)
+    data = dict(GOOD, heat={**HEAT, "lining": [{"material": "fireclay_brick", "thicknes": "5 cm"}]})
+    with pytest.raises(InputError) as info:
+        parse_case(data)
+    assert str(info.value).startswith(
+        'heat.lining.0.thicknes: unknown key, did you mean "thickness"? '
+        "(accepted keys: material, thickness, absent)"
+    )
+
+
+@pytest.mark.parametrize(
+    ("heat", "message"),
+    [
+        # used to be reported as "material.solid" / "lining.material" at run time
+        ({**HEAT, "solid": "sandd"}, 'heat.solid: "sandd" is not one of charcoal, lime,'),
+        (
+            {**HEAT, "lining": [{"material": "fire brick", "thickness": "50 mm"}]},
+            'heat.lining.0.material: "fire brick" is not one of carbon_steel,',
+        ),
+    ],
+)
+def test_unknown_library_names_are_reported_at_their_path(heat, message):
+    with pytest.raises(InputError) as info:
+        parse_case(dict(GOOD, heat=heat))
+    assert str(info.value).startswith(message)
+
+
+def test_empty_case_file(tmp_path):
+    p = tmp_path / "empty.yaml"
+    p.write_text("")
+    with pytest.raises(InputError, match="empty.yaml: the case is empty"):
+        load_case(p)

@@ -28,6 +28,7 @@ fields of :class:`Case`.
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 from pathlib import Path
@@ -38,6 +39,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
 from pydantic_core import PydanticCustomError
 
 from rotarykiln.errors import InputError
+from rotarykiln.materials._library import load_library
 from rotarykiln.transverse.config import TransverseSection
 from rotarykiln.units import to_si
 
@@ -197,11 +199,29 @@ class Bed(Section):
     fill: FillFraction
 
 
+def _library_name(filename: str):
+    """A validator: the value must be an entry of the material library ``filename``."""
+
+    def check(v: Any) -> str:
+        names = sorted(load_library(filename))
+        if v not in names:
+            raise PydanticCustomError(
+                "choice", '"{value}" is not one of {names}', {"value": v, "names": ", ".join(names)}
+            )
+        return v
+
+    return check
+
+
+SolidName = Annotated[str, BeforeValidator(_library_name("solids.yaml"))]
+LiningMaterialName = Annotated[str, BeforeValidator(_library_name("refractories.yaml"))]
+
+
 class LiningLayer(Section):
     """One lining layer (``heat.lining``, ``chemistry.lining``): a library material, a thickness
     and the stretches (from z, to z) where it is absent."""
 
-    material: str
+    material: LiningMaterialName
     thickness: Length
     absent: list[tuple[Position, Position]] = []
 
@@ -251,7 +271,7 @@ class HeatMeasurements(Section):
 class Heat(Section):
     """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md."""
 
-    solid: str = "sand"
+    solid: SolidName = "sand"
     solid_inlet_temperature: Temperature = 298.15
     fill: FillFraction | list[FillFraction] | None = None
     counter_current: bool = True
@@ -457,6 +477,8 @@ def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:
     """The pydantic model class that owns the field at ``loc`` (without its last element)."""
     current: Any = model
     for part in loc[:-1]:
+        if isinstance(part, int):  # an index into a list: the list's item model owns the rest
+            continue
         if not (isinstance(current, type) and issubclass(current, BaseModel)):
             return None
         info = current.model_fields.get(part)
@@ -467,11 +489,13 @@ def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:
 
 
 def _unwrap(annotation: Any) -> Any:
-    args = getattr(annotation, "__args__", None)
-    if args:
-        for a in args:
-            if isinstance(a, type) and issubclass(a, BaseModel):
-                return a
+    """The model class inside ``X | None``, ``list[X]``, ``list[X] | None`` (else ``annotation``)."""
+    for a in getattr(annotation, "__args__", None) or ():
+        if isinstance(a, type) and issubclass(a, BaseModel):
+            return a
+        inner = _unwrap(a)
+        if isinstance(inner, type) and issubclass(inner, BaseModel):
+            return inner
     return annotation
 
 
@@ -481,15 +505,17 @@ def _format_error(model: type[BaseModel], err: dict) -> str:
     kind = err["type"]
     if kind == "extra_forbidden":
         owner = _model_at(model, loc)
-        accepted = ", ".join(owner.model_fields) if owner else ""
-        return f"{path}: unknown key (accepted keys: {accepted})"
+        names = list(owner.model_fields) if owner else []
+        close = difflib.get_close_matches(str(loc[-1]), names, n=1) if loc else []
+        hint = f', did you mean "{close[0]}"?' if close else ""
+        return f"{path}: unknown key{hint} (accepted keys: {', '.join(names)})"
     if kind == "missing":
         return f"{path}: missing (required)"
     if kind in ("model_type", "dict_type"):
         return f"{path}: expected a mapping of keys, got {err.get('input')!r}"
     msg = err["msg"]
     msg = re.sub(r"^Value error, ", "", msg)
-    if kind in ("quantity", "quantity_range", "number"):
+    if kind in ("quantity", "quantity_range", "number", "choice"):
         return f"{path}: {msg}"
     return f"{path}: {err.get('input')!r}: {msg}"
 
@@ -502,12 +528,17 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
     InputError
         One line: the first problem found, with a count of the others.
     """
+    if data is None:
+        raise InputError(
+            source, message=f"{source}: the case is empty (it needs kiln: and operation: sections)"
+        )
     if not isinstance(data, dict):
         raise InputError(source, message=f"{source}: expected a mapping of sections, got {data!r}")
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        errors = exc.errors()
+        # a misspelt key also makes the real key "missing": report the misspelling first
+        errors = sorted(exc.errors(), key=lambda e: e["type"] != "extra_forbidden")
         first = _format_error(model, errors[0])
         more = f" (and {len(errors) - 1} more problem{'s' if len(errors) > 2 else ''})"
         message = first + (more if len(errors) > 1 else "")
