@@ -172,3 +172,96 @@ def test_readme_first_lines_name_the_two_setup_commands():
     head = readme.read_text().splitlines()[:6]
     assert any(line.startswith("make demo") for line in head)
     assert any(line.startswith("make test") for line in head)
+
+
+REGIME = ["regime", "--diameter", "6", "m", "--fill", "0.3"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        ([*REGIME, "--speed", "1.5", "rmp"], '--speed: "1.5 rmp" has an unknown unit "rmp"'),
+        ([*REGIME, "--speed", "1.5"], '--speed: "1.5" needs a unit, expected a rotation rate'),
+        ([*REGIME, "--speed", "1.5", "1/min"], "does not say revolutions or radians"),
+        (
+            ["regime", "--diameter", "0,4", "m", "--speed", "2", "rpm", "--fill", "0.3"],
+            '--diameter: "0,4 m" has a comma',  # used to run with a 0 m diameter
+        ),
+        ([*REGIME, "--speed", "5", "rpm", "--plot", "map.txt"], '".txt" is not a figure format'),
+    ],
+)
+def test_engineer_typos_exit_2_with_one_line(capsys, argv, needle):
+    code, _, err = run_cli(capsys, *argv)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and needle in lines[0], err
+
+
+@pytest.mark.parametrize("spelling", [["1.5", "RPM"], ["1.5", "rev/min"], ["1.5rpm"]])
+def test_rpm_spellings(capsys, spelling):
+    code, out, _ = run_cli(capsys, *REGIME, "--speed", *spelling, "--json")
+    assert code == 0 and json.loads(out)["speed_rpm"] == pytest.approx(1.5)
+
+
+def test_out_that_is_a_file(capsys, tmp_path):
+    f = tmp_path / "results"
+    f.write_text("")
+    code, _, err = run_cli(capsys, "run", "heat/tscheng_A16", "--out", str(f), "--no-plots")
+    assert code == 2 and err.strip().endswith("is a file, not a folder")
+
+
+def test_transverse_duration_takes_value_and_unit(capsys, tmp_path):
+    # "--duration 1 s" (two words, like every other quantity option) used to be a usage error
+    code, out, _ = run_cli(
+        capsys, "transverse", "retort/case02", "--duration", "1", "s", "--no-plots",
+        "--out", str(tmp_path), "--json",
+    )  # fmt: skip
+    assert code == 0 and (tmp_path / "summary.json").is_file()
+
+
+def test_rtd_predict_accepts_a_builtin_case_name(capsys):
+    code, out, _ = run_cli(capsys, "rtd", "predict", "rtd/bongo_njeng_sand_rl", "--json")
+    assert code == 0 and json.loads(out)["rtd_mean_residence_time_s"] > 0
+
+
+def test_run_says_the_transverse_section_needs_its_command(capsys, tmp_path):
+    code, _, err = run_cli(capsys, "run", "retort/case02", "--out", str(tmp_path), "--no-plots")
+    assert code == 0 and "rotarykiln transverse retort/case02" in err
+
+
+def test_help_is_plain_text_and_quantities_read_value_unit(capsys):
+    for path in _all_subcommand_paths():
+        with pytest.raises(SystemExit):
+            main([*path, "--help"])
+        out = capsys.readouterr().out
+        assert "``" not in out and ":data:" not in out, path
+        assert "VALUE UNIT [VALUE UNIT" not in out, path
+
+
+def test_a_repeated_warning_is_printed_once(capsys):
+    import warnings
+
+    from rotarykiln import cli
+
+    def func(args):
+        for _ in range(2):
+            warnings.warn("Re = 100 is outside the range", stacklevel=1)
+        return 0
+
+    parser = cli.build_parser
+    try:
+        cli.build_parser = lambda: _FakeParser(func)
+        assert cli.main([]) == 0
+    finally:
+        cli.build_parser = parser
+    assert capsys.readouterr().err.count("Re = 100") == 1
+
+
+class _FakeParser:
+    def __init__(self, func):
+        self.func = func
+
+    def parse_args(self, argv):
+        import argparse
+
+        return argparse.Namespace(func=self.func, command="fake")

@@ -47,8 +47,14 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+_shown: set[str] = set()
+
+
 def _show_warning(message, category, filename, lineno, file=None, line=None):
-    print(f"warning: {message}", file=sys.stderr)
+    text = f"warning: {message}"
+    if text not in _shown:  # a model called twice with the same values warns once
+        _shown.add(text)
+        print(text, file=sys.stderr)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -59,6 +65,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     previous = warnings.showwarning
     warnings.showwarning = _show_warning
+    _shown.clear()
     try:
         return int(args.func(args) or 0)
     except InputError as exc:

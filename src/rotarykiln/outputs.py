@@ -16,6 +16,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from rotarykiln.errors import InputError
+
 __all__ = [
     "atomic_path",
     "save_figure_atomic",
@@ -86,5 +88,11 @@ def save_figure_atomic(path: str | os.PathLike, fig, **savefig_kwargs) -> Path:
     """Save a matplotlib figure atomically; the format follows the suffix of ``path``."""
     savefig_kwargs.setdefault("dpi", 120)
     savefig_kwargs.setdefault("bbox_inches", "tight")
-    fmt = Path(path).suffix.lstrip(".") or "png"
+    fmt = Path(path).suffix.lstrip(".").lower() or "png"
+    supported = fig.canvas.get_supported_filetypes()
+    if fmt not in supported:
+        raise InputError(
+            str(path),
+            message=f'{path}: ".{fmt}" is not a figure format (use .png, .pdf or .svg)',
+        )
     return atomic_path(path, lambda p: fig.savefig(p, format=fmt, **savefig_kwargs))

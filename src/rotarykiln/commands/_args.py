@@ -9,12 +9,13 @@ from rotarykiln.errors import InputError
 from rotarykiln.outputs import to_json
 from rotarykiln.units import to_si
 
-__all__ = ["add_quantity", "get_quantity", "print_json", "out_dir"]
+__all__ = ["add_quantity", "get_quantity", "print_json", "out_dir", "plain"]
 
 
 def add_quantity(parser: argparse.ArgumentParser, name: str, help: str, **kwargs) -> None:
     """Add ``--name VALUE [UNIT]``: both ``--speed 5 rpm`` and ``--speed 5rpm`` work."""
-    parser.add_argument(f"--{name}", nargs="+", metavar="VALUE UNIT", help=help, **kwargs)
+    # usage reads "--speed VALUE [UNIT ...]" (a tuple metavar names the first and the rest)
+    parser.add_argument(f"--{name}", nargs="+", metavar=("VALUE", "UNIT"), help=help, **kwargs)
 
 
 def get_quantity(args: argparse.Namespace, name: str, kind: str, *, required: bool = False):
@@ -35,6 +36,8 @@ def print_json(data) -> None:
 def out_dir(path: str | None, default: str) -> Path:
     """The output folder (created)."""
     p = Path(path or default)
+    if p.exists() and not p.is_dir():
+        raise InputError("--out", str(p), message=f"--out: {p} is a file, not a folder")
     try:
         p.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -42,3 +45,8 @@ def out_dir(path: str | None, default: str) -> Path:
             "--out", str(p), message=f"--out: cannot create {p} ({exc.strerror})"
         ) from None
     return p
+
+
+def plain(doc: str) -> str:
+    """A module docstring as ``--help`` text: reST markup (````code````, ``::``) removed."""
+    return doc.replace("``", "").replace("::\n", ":\n")

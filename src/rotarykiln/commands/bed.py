@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import argparse
 
-from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print_json
+from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, plain, print_json
 from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 from rotarykiln.report import format_table
 from rotarykiln.transport.solve import solve_bed
@@ -23,7 +23,7 @@ def register(sub) -> None:
     p = sub.add_parser(
         "bed",
         help="axial bed-depth profile, hold-up and residence time (Kramers or Scott)",
-        description=__doc__,
+        description=plain(__doc__),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_quantity(p, "diameter", "drum inner diameter, e.g. 0.4 m")
@@ -43,7 +43,12 @@ def register(sub) -> None:
         help='internal weir (Scott): distance from the discharge and height, e.g. "0.25m" "0.02m"'
         "; repeatable",
     )
-    p.add_argument("--model", choices=("kramers", "scott"), default="kramers")
+    p.add_argument(
+        "--model",
+        choices=("kramers", "scott"),
+        default="kramers",
+        help="bed-profile model: Kramers-Croockewit/Saeman (default) or Scott (weirs, friction)",
+    )
     p.add_argument(
         "--friction",
         default="static",

@@ -20,7 +20,12 @@ DEMO_CASE = "heat/tscheng_A16"
 
 
 def register(sub) -> None:
-    p = sub.add_parser("demo", help="run the built-in demonstration case")
+    p = sub.add_parser(
+        "demo",
+        help="run the built-in demonstration case",
+        description="Run Tscheng's hot-air pilot kiln (run A16, built-in case heat/tscheng_A16): "
+        "heat profiles with the measured temperatures, regime map, cross-section, summary.",
+    )
     p.add_argument("--out", default="demo-output", help="output folder (default: demo-output)")
     p.set_defaults(func=run)
 

@@ -48,7 +48,7 @@ def register(sub) -> None:
         description="Predicted E(t) from the rtd: section of a case. Example: rotarykiln rtd "
         "predict kiln.yaml --out rtd-results",
     )
-    pr.add_argument("case", help="case file (YAML) with an rtd: section")
+    pr.add_argument("case", help="case file (YAML) with an rtd: section, or a built-in case name")
     pr.add_argument("--out", help="output folder (nothing written without it)")
     pr.add_argument("--json", action="store_true", help="print JSON")
     pr.set_defaults(func=run_predict)
@@ -114,9 +114,10 @@ def run_fit(args: argparse.Namespace) -> int:
 
 def run_predict(args: argparse.Namespace) -> int:
     from rotarykiln.case import load_case
+    from rotarykiln.commands.run import case_path
     from rotarykiln.rtd.predict import predict_from_case
 
-    case = load_case(args.case)
+    case = load_case(case_path(args.case))
     pred = predict_from_case(case)
     summary = {"case": case.name, **pred.summary()}
     if args.out:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import sys
 from pathlib import Path
 
 from rotarykiln.case import load_case
@@ -25,7 +26,14 @@ RUNNERS: dict[str, str] = {
 
 
 def register(sub) -> None:
-    p = sub.add_parser("run", help="validate a case file and run it", description=__doc__)
+    p = sub.add_parser(
+        "run",
+        help="validate a case file and run it",
+        description="Validate a case file (YAML with units) and run every model its sections "
+        "switch on (transport, heat, rtd, chemistry); write summary.json, summary.txt, tables and "
+        "figures to --out. Built-in cases: see src/rotarykiln/cases/README.md. "
+        "Example: rotarykiln run limestone_calcination --out lime",
+    )
     p.add_argument("case", help="case file (YAML) or the name of a built-in case")
     p.add_argument("--out", help="output folder (default: <case name>-results)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
@@ -77,4 +85,10 @@ def run(args: argparse.Namespace) -> int:
     else:
         print(format_table(summary))
         print(f"\nresults written to {out}/")
+    if case.transverse is not None:
+        print(
+            f"note: the transverse: section is not run here; run it with "
+            f"`rotarykiln transverse {args.case}`",
+            file=sys.stderr,
+        )
     return 0

@@ -21,7 +21,7 @@ from pathlib import Path
 import yaml
 
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.commands._args import out_dir, print_json
+from rotarykiln.commands._args import out_dir, plain, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.studies import grid, one_at_a_time, run_sweep
 from rotarykiln.studies.runner import EXECUTORS
@@ -33,7 +33,7 @@ def register(sub) -> None:
     p = sub.add_parser(
         "sweep",
         help="run a model over ranges of case fields in parallel; one table and plots",
-        description=__doc__,
+        description=plain(__doc__),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--case", required=True, help="case YAML file or built-in case name")

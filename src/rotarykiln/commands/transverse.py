@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from rotarykiln.commands._args import out_dir, print_json
+from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print_json
 
 __all__ = ["register", "run"]
 
@@ -25,7 +25,7 @@ def register(sub) -> None:
     )
     p.add_argument("case", help="case YAML file, or a built-in case name (retort/case01..16)")
     p.add_argument("--out", help="output folder (default: transverse_<case name>)")
-    p.add_argument("--duration", help='override the simulated time, e.g. "60 s"')
+    add_quantity(p, "duration", 'override the simulated time, e.g. "60 s"')
     p.add_argument("--gif", action="store_true", help="also write an animated GIF (Pillow)")
     p.add_argument("--no-plots", action="store_true", help="skip the figures")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
@@ -50,12 +50,11 @@ def run(args: argparse.Namespace) -> int:
     from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
     from rotarykiln.transverse.config import retort_spec_from_case
     from rotarykiln.transverse.retort import run_retort
-    from rotarykiln.units import to_si
 
     case, stem = _load(args.case)
     spec = retort_spec_from_case(case)
     if args.duration:
-        spec = dataclasses.replace(spec, duration=to_si("--duration", args.duration, "time"))
+        spec = dataclasses.replace(spec, duration=get_quantity(args, "duration", "time"))
     snaps = tuple(t for t in spec.snapshot_times if t <= spec.duration)
     map_times = snaps
     if args.gif:
