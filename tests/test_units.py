@@ -96,3 +96,11 @@ def test_to_si_common_spellings(text, kind, expected):
 def test_to_si_errors_name_the_unit_and_what_is_accepted(text, kind, message):
     with pytest.raises(InputError, match=re.escape(message)):
         to_si("x", text, kind)
+
+
+@pytest.mark.parametrize(("value", "kind"), [(1.5, "rotation rate"), (62, "mass flow")])
+def test_bare_numbers_refused_where_the_habitual_unit_is_not_si(value, kind):
+    with pytest.raises(InputError, match="needs a unit"):
+        to_si("x", value, kind)
+    assert to_si("x", 0, kind) == 0.0
+    assert to_si("x", 0.3, "length") == 0.3  # other kinds: a bare number is SI

@@ -69,6 +69,10 @@ KINDS: dict[str, Kind] = {
     ]
 }
 
+UNIT_REQUIRED = {"rotation rate": "rpm", "mass flow": "kg/h", "volumetric flow": "m3/h"}
+"""Kinds whose bare numbers are refused: an engineer's habitual unit (rpm, kg/h) is not SI, so a
+bare number would be silently misread by a factor of 2 pi / 60 or 3600. Zero is accepted."""
+
 _ANGLE_UNITS = (
     "degree",
     "radian",
@@ -226,7 +230,8 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
     field : str
         Name used in error messages (``"operation.speed"``).
     value : str or number
-        ``"1.5 rpm"``; a bare number is taken as SI, except for angles, which need a unit.
+        ``"1.5 rpm"``; a bare number is taken as SI, except for angles and the kinds of
+        :data:`UNIT_REQUIRED` (rotation rates, flows), which need a unit (zero excepted).
     kind : str
         A key of :data:`KINDS`.
 
@@ -254,6 +259,11 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
                 field,
                 message=f'{field}: bare number {value} needs a unit (e.g. "{value} deg", "{value} rad"'
                 ', or "% " / "m/m" for a grade)',
+            )
+        if kind in UNIT_REQUIRED and value != 0:
+            raise InputError(
+                field,
+                message=f'{field}: bare number {value} needs a unit (e.g. "{value} {UNIT_REQUIRED[kind]}")',
             )
         return float(value)
     if not isinstance(value, str):
