@@ -20,20 +20,20 @@ demo: $(STAMP)
 	@echo "demo results and plots written to $(DEMO_OUT)/"
 
 test: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks
-	$(BIN)/ruff format --check src tests benchmarks
+	$(BIN)/ruff check src tests benchmarks docs/scripts examples
+	$(BIN)/ruff format --check src tests benchmarks docs/scripts examples
 	MPLBACKEND=Agg $(BIN)/python -m pytest -q
 
 bench: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python -m pytest benchmarks --benchmark-enable --benchmark-only -q --benchmark-columns=median,iqr,rounds
 
 lint: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks
-	$(BIN)/ruff format --check src tests benchmarks
+	$(BIN)/ruff check src tests benchmarks docs/scripts examples
+	$(BIN)/ruff format --check src tests benchmarks docs/scripts examples
 
 format: $(STAMP)
-	$(BIN)/ruff check --fix src tests benchmarks
-	$(BIN)/ruff format src tests benchmarks
+	$(BIN)/ruff check --fix src tests benchmarks docs/scripts examples
+	$(BIN)/ruff format src tests benchmarks docs/scripts examples
 
 clean:
 	rm -rf $(VENV) $(DEMO_OUT) build dist src/*.egg-info

@@ -70,15 +70,16 @@ def run(args: argparse.Namespace) -> int:
             result.geometry.cv_velocity.min() * result.geometry.velocity_factor
         ),
         "time_step_s": result.time_step,
-        "final_contact_model_m": result.final_contact_bed,
-        "peak_extent_of_mixing_percent": float(100 * result.extent.max()),
+        "final_contact_distance_eq6_11_m": result.final_contact_bed,
+        # contact over the eq 6.11 final contact: may pass 100 % before the bed de-mixes
+        "peak_contact_over_final_contact_percent": float(100 * result.extent.max()),
         "mixing_time_s": result.mixing_time,
         "final_shale_temperature_K": float(result.temperature[-1, 1]),
         "final_ash_temperature_K": float(result.temperature[-1, 0]),
         "volatiles_at_30s_percent": float(100 * np.interp(30.0, result.t, result.volatiles)),
         "final_volatiles_percent": float(100 * result.volatiles[-1]),
-        "mass_balance_error": result.mass_error,
-        "energy_balance_error": result.energy_error,
+        "mass_balance_max_relative_error": result.mass_error,
+        "energy_balance_max_relative_error": result.energy_error,
     }
     write_json_atomic(folder / "summary.json", summary)
     if not args.no_plots:
