@@ -265,3 +265,9 @@ class _FakeParser:
         import argparse
 
         return argparse.Namespace(func=self.func, command="fake")
+
+
+def test_run_unknown_name_lists_the_builtin_cases(capsys):
+    code, _, err = run_cli(capsys, "run", "limestone")
+    assert code == 2
+    assert "limestone_calcination" in err and len(err.strip().splitlines()) == 1

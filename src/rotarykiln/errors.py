@@ -156,9 +156,17 @@ def warn_out_of_range(what: str, value: Any, low: float, high: float, source: st
     """
     arr = np.asarray(value, dtype=float)
     if np.any((arr < low) | (arr > high)):
+        if arr.ndim and arr.size > 1:
+            outside = arr[(arr < low) | (arr > high)]
+            shown = (
+                f"{_fmt(float(outside.min()))}"
+                if outside.min() == outside.max()
+                else f"{_fmt(float(outside.min()))} to {_fmt(float(outside.max()))}"
+            )
+        else:
+            shown = _fmt(float(arr.ravel()[0]) if arr.ndim else float(arr))
         warnings.warn(
-            f"{what} = {_fmt(arr if arr.ndim else float(arr))} is outside the range "
-            f"[{low:g}, {high:g}] validated by {source}",
+            f"{what} = {shown} is outside the range [{low:g}, {high:g}] validated by {source}",
             OutOfRangeWarning,
             stacklevel=3,
         )

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from rotarykiln.case import load_case
 from rotarykiln.commands._args import out_dir, print_json
+from rotarykiln.errors import InputError
 from rotarykiln.outputs import save_figure_atomic, write_json_atomic, write_text_atomic
 from rotarykiln.report import case_summary, format_table
 
@@ -71,9 +72,16 @@ def case_path(spec: str) -> Path:
         return path
     from rotarykiln.cases import builtin_case_path, list_builtin_cases
 
-    if spec in list_builtin_cases():
+    names = list_builtin_cases()
+    if spec in names:
         return builtin_case_path(spec)
-    return path
+    folders = {n.split("/")[0] for n in names if "/" in n}
+    if path.suffix or ("/" in spec and spec.split("/")[0] not in folders):
+        return path  # looks like a file path: load_case reports it missing
+    raise InputError(
+        "case",
+        message=f"{spec}: no such case file or built-in case (built-in: {', '.join(names)})",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
