@@ -246,14 +246,16 @@ class HeatGas(Section):
 
 
 class HeatClosures(Section):
-    """Closure names of the heat model (see docs/heat.md)."""
+    """Closure names of the heat model (see docs/heat.md). An omitted key takes the model's
+    default (:class:`rotarykiln.kiln.model.Closures`: Tscheng & Watkinson convection, Li 2005
+    covered wall, radiation on, Johansson 2011 gas emissivity, the solid's given conductivity)."""
 
-    gas_wall: str = "tscheng1979"
-    gas_bed: str = "tscheng1979"
-    covered_wall: str = "li2005"
-    radiation: bool = True
-    gas_emissivity: str | float = "johansson2011"
-    bed_conductivity: str = "given"
+    gas_wall: str | None = None
+    gas_bed: str | None = None
+    covered_wall: str | None = None
+    radiation: bool | None = None
+    gas_emissivity: str | float | None = None
+    bed_conductivity: str | None = None
 
 
 class HeatMeasurements(Section):

@@ -68,10 +68,12 @@ class Closures:
         Examples
         --------
         >>> from rotarykiln.case import HeatClosures
-        >>> Closures.from_case(HeatClosures(gas_bed="gorog1982")).gas_bed
-        'gorog1982'
+        >>> c = Closures.from_case(HeatClosures(gas_bed="gorog1982"))
+        >>> c.gas_bed, c.gas_wall
+        ('gorog1982', 'tscheng1979')
         """
-        return cls(**{f.name: getattr(section, f.name) for f in fields(cls)})
+        given = {f.name: getattr(section, f.name) for f in fields(cls)}
+        return cls(**{k: v for k, v in given.items() if v is not None})
 
 
 FillLike = float | np.ndarray | Callable[[np.ndarray], np.ndarray] | tuple

@@ -78,21 +78,8 @@ def open_open_peclet_from_variance(sigma_theta2):
     return (8.0 / (np.sqrt(1.0 + 8.0 * s) - 1.0))[()]
 
 
-@dataclass(frozen=True)
-class MomentResult:
-    """Parameters of a model matched to the mean and variance of the data."""
-
-    model: str
-    convention: str
-    mean: float
-    variance: float
-    tau: float
-    shape: float | None
-    length: float | None = None
-
-    @property
-    def sigma_theta2(self) -> float:
-        return self.variance / self.mean**2
+class _ModelParameters:
+    """Quantities shared by results that carry ``model``, ``tau``, ``shape`` and ``length``."""
 
     @property
     def peclet(self) -> float | None:
@@ -112,6 +99,23 @@ class MomentResult:
 
     def exit_age(self, t) -> np.ndarray:
         return MODELS[self.model].exit_age(t, self.tau, self.shape)
+
+
+@dataclass(frozen=True)
+class MomentResult(_ModelParameters):
+    """Parameters of a model matched to the mean and variance of the data."""
+
+    model: str
+    convention: str
+    mean: float
+    variance: float
+    tau: float
+    shape: float | None
+    length: float | None = None
+
+    @property
+    def sigma_theta2(self) -> float:
+        return self.variance / self.mean**2
 
 
 def _normalised_variance_ratio(spec, p):
@@ -198,7 +202,7 @@ def moment_method(
 
 
 @dataclass(frozen=True)
-class FitResult:
+class FitResult(_ModelParameters):
     """Least-squares fit of an RTD model to E(t) data.
 
     ``tau`` is the fitted space time L/u [s]; ``model_mean`` the mean of the fitted E(t) [s];
@@ -236,26 +240,12 @@ class FitResult:
         return 1.0 - self.sse / float(np.sum((self.data - self.data.mean()) ** 2))
 
     @property
-    def peclet(self) -> float | None:
-        return self.shape if MODELS[self.model].shape == "peclet" else None
-
-    @property
     def model_mean(self) -> float:
         return MODELS[self.model].moments(self.tau, self.shape)[0]
 
     @property
     def model_variance(self) -> float:
         return MODELS[self.model].moments(self.tau, self.shape)[1]
-
-    @property
-    def dispersion(self) -> float | None:
-        """D = L^2/(Pe tau) [m2/s] (None without a length or a Peclet number)."""
-        if self.length is None or self.peclet is None:
-            return None
-        return self.length**2 / (self.peclet * self.tau)
-
-    def exit_age(self, t) -> np.ndarray:
-        return MODELS[self.model].exit_age(t, self.tau, self.shape)
 
     def summary(self) -> dict:
         """Plain numbers for reports and JSON (SI units)."""
