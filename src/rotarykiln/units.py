@@ -17,11 +17,25 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
+import numpy as np
 import pint
 
-from rotarykiln.errors import InputError
+from rotarykiln.errors import InputError, check_positive
 
-__all__ = ["KINDS", "Kind", "ureg", "to_si", "format_quantity"]
+__all__ = [
+    "KINDS",
+    "Kind",
+    "ureg",
+    "to_si",
+    "format_quantity",
+    "GasFlow",
+    "gas_flow",
+    "molar_volume",
+    "R_GAS",
+    "NORMAL_STATE",
+    "STANDARD_STATE",
+    "SCF_STATE",
+]
 
 ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 ureg.define("rpm_ = revolution / minute")  # "rpm" already exists; keep an alias harmless
@@ -301,3 +315,317 @@ def format_quantity(value: float, kind: str, unit: str | None = None, digits: in
     if unit:
         q = q.to(unit)
     return f"{q.magnitude:.{digits}g} {unit or target.si}"
+
+
+# --------------------------------------------------------------------------------------------
+# Gas flows as engineers type them: mass, molar, normal/standard volume, or volume at a stated
+# reference state. Kept apart from to_si because the result is not one SI kind but two.
+
+R_GAS = 8.31446261815324
+"""Molar gas constant, J/(mol K) (CODATA 2018, exact)."""
+
+NORMAL_STATE = (273.15, 101325.0)
+"""Normal conditions of DIN 1343 (0 degC, 1 atm), K and Pa: the "N" of Nm3/h, NL/min."""
+
+STANDARD_STATE = (288.15, 101325.0)
+"""Standard conditions of ISO 13443 (15 degC, 1 atm), K and Pa: the "S" of Sm3/h, SL/s."""
+
+SCF_STATE = ((60.0 - 32.0) / 1.8 + 273.15, 14.696 * 6894.757293168361)
+"""Standard cubic foot (scfm, scfh): 60 degF and 14.696 psia (288.706 K, 101325.35 Pa), the US
+convention of the compressed-air and process industries; the US natural-gas industry's
+14.73 psia differs by 0.2 %: give such flows as plain ft3/min with a reference state."""
+
+GAS_FLOW_ACCEPTED = (
+    "a mass flow (kg/h, g/s, t/h), a molar flow (mol/s, kmol/h), a normal volume flow "
+    "(Nm3/h, NL/min: 0 degC, 1 atm), a standard volume flow (Sm3/h, SL/s: 15 degC, 1 atm; "
+    "scfm, scfh: 60 degF, 14.696 psia)"
+)
+"""What :func:`gas_flow` accepts, as quoted in its error messages."""
+
+_REFERENCED_UNIT = re.compile(r"^(?P<ref>[NS])(?P<vol>(?i:m3|l|ml|cm3|dm3))(?P<per>/.+)?$")
+_NANO_LOOKALIKE = re.compile(r"^[ns](?i:m3|l|ml|cm3|dm3)/")
+_SCF_UNITS = {
+    "scfs": "s",
+    "scfm": "min",
+    "scfh": "h",
+    "scfd": "day",
+    "scf/s": "s",
+    "scf/min": "min",
+    "scf/h": "h",
+    "scf/hr": "h",
+    "scf/d": "day",
+    "scf/day": "day",
+}
+_INSTRUMENT_UNITS = {"sccm", "sccs", "slm", "slpm", "slph", "smlpm", "sclm"}
+_NOT_FINITE = re.compile(r"^\s*[-+]?(nan|inf|infinity)\b", re.I)
+_STATE_NAMES = {
+    "N": "a normal volume flow (0 degC, 101325 Pa, DIN 1343)",
+    "S": "a standard volume flow (15 degC, 101325 Pa, ISO 13443)",
+    "scf": "a standard volume flow (60 degF, 14.696 psia)",
+}
+
+
+@dataclass(frozen=True)
+class GasFlow:
+    """A gas flow read by :func:`gas_flow`: a mass flow (kg/s) or a molar flow (mol/s).
+
+    Attributes
+    ----------
+    kind : str
+        ``"mass"`` (``value`` in kg/s) or ``"molar"`` (``value`` in mol/s).
+    value : float
+        The flow, kg/s or mol/s according to ``kind``.
+    reference_temperature, reference_pressure : float or None, K and Pa
+        The state a volume flow was converted at (273.15 K and 101325 Pa for Nm3/h); None for a
+        flow given as mass or moles.
+    """
+
+    kind: str
+    value: float
+    reference_temperature: float | None = None
+    reference_pressure: float | None = None
+
+    def mass_flow(self, molar_mass: float) -> float:
+        """The flow in kg/s, given the molar mass of the gas in kg/mol."""
+        return self.value if self.kind == "mass" else self.value * molar_mass
+
+    def molar_flow(self, molar_mass: float) -> float:
+        """The flow in mol/s, given the molar mass of the gas in kg/mol."""
+        return self.value if self.kind == "molar" else self.value / molar_mass
+
+
+def molar_volume(T, p=101325.0):
+    """Molar volume of an ideal gas, :math:`V_m = R T / p`.
+
+    At 1 atm: 22.414 L/mol at 0 degC (normal conditions, DIN 1343), 23.645 L/mol at 15 degC
+    (standard conditions, ISO 13443), 24.465 L/mol at 25 degC.
+
+    Parameters
+    ----------
+    T : float or array, K
+        Temperature.
+    p : float or array, Pa
+        Pressure (default 101325 Pa, 1 atm).
+
+    Returns
+    -------
+    float or array, m3/mol
+        Molar volume.
+
+    Examples
+    --------
+    >>> round(molar_volume(273.15), 6)  # m3/mol
+    0.022414
+    >>> round(molar_volume(288.15) * 1e3, 3), round(molar_volume(298.15) * 1e3, 3)
+    (23.645, 24.465)
+
+    References
+    ----------
+    R from CODATA 2018 (exact in the SI since 2019); DIN 1343:1990 (normal conditions);
+    ISO 13443:1996 (standard reference conditions for natural gas).
+    """
+    check_positive("T", T, "K")
+    check_positive("p", p, "Pa")
+    v = R_GAS * np.asarray(T, dtype=float) / np.asarray(p, dtype=float)
+    return float(v) if v.ndim == 0 else v
+
+
+def _sibling(field: str, name: str) -> str:
+    """``"burner.air_flow"`` -> ``"burner.<name>"``: the key beside ``field`` in its section."""
+    return f"{field.rsplit('.', 1)[0]}.{name}" if "." in field else name
+
+
+def _reference(field: str, value, kind: str) -> float | None:
+    if value is None:
+        return None
+    si = to_si(field, value, kind)
+    if not (math.isfinite(si) and si > 0):
+        raise InputError(field, message=f"{field}: {value!r} is not > 0 {KINDS[kind].si}")
+    return si
+
+
+def gas_flow(
+    value,
+    field: str,
+    *,
+    reference_temperature=None,
+    reference_pressure=None,
+    allow_zero: bool = False,
+) -> GasFlow:
+    """Read a burner or air flow as an engineer types it: mass, molar or volume at a known state.
+
+    Accepted: mass flows (``"2.2 kg/h"``, ``"0.5 g/s"``, ``"1 t/h"``); molar flows
+    (``"0.1 mol/s"``, ``"3 kmol/h"``); normal volume flows, 0 degC and 101325 Pa (DIN 1343)
+    (``"12 Nm3/h"``, ``"12 Nm³/h"``, ``"0.83 NL/s"``, ``"5 Nl/min"``); standard volume flows,
+    15 degC and 101325 Pa (ISO 13443) (``"12 Sm3/h"``, ``"0.8 SL/s"``), or 60 degF and 14.696
+    psia for standard cubic feet (``"10 scfm"``, ``"600 scfh"``); plain volume flows
+    (``"1.42 L/s"``, ``"3 m3/h"``) only when ``reference_temperature`` is given, converted with
+    :math:`\\dot n = p_{ref} \\dot V / (R T_{ref})`. A volume is returned as a molar flow.
+    Refused with :class:`~rotarykiln.errors.InputError` naming ``field``: bare numbers (zero
+    excepted when allowed), NaN and infinities, negative flows, zero unless ``allow_zero``, a
+    plain volume flow without a reference temperature, a normal or standard volume flow whose
+    own reference state contradicts ``reference_temperature`` or ``reference_pressure``, and
+    instrument units whose reference state varies by maker (sccm, slm).
+
+    Parameters
+    ----------
+    value : str
+        The flow with its unit, e.g. ``"12 Nm3/h"``.
+    field : str
+        Dotted path of the field (``"burner.air_flow"``), named in error messages; its section
+        (``"burner"``) names the reference keys (``"burner.reference_temperature"``).
+    reference_temperature : float or str, K
+        Temperature at which a plain volume flow was measured (a float in K, or a string with a
+        unit such as ``"25 degC"``); None (default) refuses plain volume flows.
+    reference_pressure : float or str, Pa
+        Pressure of that state (default 101325 Pa when ``reference_temperature`` is given).
+    allow_zero : bool
+        Accept a zero flow (default False: zero is refused).
+
+    Returns
+    -------
+    GasFlow
+        ``kind`` ``"mass"`` with ``value`` in [kg/s], or ``"molar"`` with ``value`` in [mol/s];
+        the reference state [K, Pa] a volume was converted at (None for mass and molar flows).
+
+    Examples
+    --------
+    >>> f = gas_flow("12 Nm3/h", "burner.air_flow")
+    >>> f.kind, round(f.value, 6), f.reference_temperature
+    ('molar', 0.148717, 273.15)
+    >>> gas_flow("2.2 kg/h", "burner.fuel_flow")
+    GasFlow(kind='mass', value=0.0006111111111111112, reference_temperature=None, reference_pressure=None)
+    >>> round(gas_flow("1.42 L/s", "burner.air_flow", reference_temperature=298.15).value, 5)
+    0.05804
+    >>> gas_flow("3 m3/h", "burner.air_flow")
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: burner.air_flow: "3 m3/h" is a volume flow at an unstated temperature and pressure; expected a normal volume flow such as 12 Nm3/h, a mass flow (kg/h) or a molar flow (mol/s), or give burner.reference_temperature
+
+    References
+    ----------
+    DIN 1343:1990 (normal conditions, 273.15 K and 101325 Pa); ISO 13443:1996 (standard
+    reference conditions, 288.15 K and 101325 Pa); CODATA 2018 for R.
+    """
+    t_field = _sibling(field, "reference_temperature")
+    p_field = _sibling(field, "reference_pressure")
+    t_ref = _reference(t_field, reference_temperature, "temperature")
+    p_ref = _reference(p_field, reference_pressure, "pressure")
+    bound = ">= 0" if allow_zero else "> 0"
+    examples = '"2.2 kg/h", "12 Nm3/h"'
+
+    if isinstance(value, bool) or not isinstance(value, str | int | float):
+        raise InputError(
+            field, message=f"{field}: {value!r} is not a gas flow with a unit ({examples})"
+        )
+    if isinstance(value, int | float):
+        if not math.isfinite(value):
+            raise InputError(field, message=f"{field}: {value} is not a finite number")
+        if value == 0:
+            if allow_zero:
+                return GasFlow("mass", 0.0)
+            raise InputError(field, message=f"{field}: {value} is zero, expected a flow > 0")
+        raise InputError(
+            field,
+            message=f'{field}: bare number {value} needs a unit (e.g. "{value} kg/h", '
+            f'"{value} Nm3/h")',
+        )
+    text = value
+    if _DECIMAL_COMMA.match(text):
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" has a comma; use a decimal point and no thousands '
+            'separator (e.g. "12.5 Nm3/h")',
+        )
+    if _NOT_FINITE.match(text):
+        raise InputError(field, message=f'{field}: "{text}" is not a finite number with a unit')
+    m = _NUMBER.match(text)
+    if not m:
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" is not a flow with a unit, expected {GAS_FLOW_ACCEPTED}',
+        )
+    number, unit = float(m.group(1)), m.group(2)
+    if not unit:
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" needs a unit, expected {GAS_FLOW_ACCEPTED}',
+        )
+    if not math.isfinite(number):
+        raise InputError(field, message=f'{field}: "{text}" is not a finite number with a unit')
+    if number < 0 or (number == 0 and not allow_zero):
+        what = "negative" if number < 0 else "zero"
+        raise InputError(field, message=f'{field}: "{text}" is {what}, expected a flow {bound}')
+
+    compact = re.sub(r"\s+", "", unit).replace("³", "3").replace("**", "").replace("^", "")
+    state = None  # "N", "S" or "scf" for a volume whose unit states its reference
+    if compact.lower() in _INSTRUMENT_UNITS:
+        raise InputError(
+            field,
+            message=f'{field}: "{text}": the reference state of {unit} differs between makers; '
+            f"write NmL/min or NL/min (0 degC, 1 atm), SmL/min or SL/min (15 degC, 1 atm), or "
+            f"mL/min with {t_field}",
+        )
+    if compact.lower() in _SCF_UNITS:
+        state, pint_unit = "scf", f"ft**3/{_SCF_UNITS[compact.lower()]}"
+    elif r := _REFERENCED_UNIT.match(compact):
+        state = r.group("ref")
+        pint_unit = _BARE_POWER.sub(r"**\1", r.group("vol").lower()) + (r.group("per") or "")
+    elif _NANO_LOOKALIKE.match(compact):
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" has a lower-case reference prefix (N and S are capitals: '
+            f'"nm3" would be cubic nanometres); write '
+            f'"{compact[0].upper()}{compact[1:]}" for {_STATE_NAMES[compact[0].upper()]}',
+        )
+    else:
+        pint_unit = _normalise(f"1 {unit}", "mass flow")[0][2:]
+    try:
+        q = ureg.Quantity(number, pint_unit)
+    except Exception:  # pint raises many types for garbage: report them all the same way
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" has an unknown unit "{unit}", expected {GAS_FLOW_ACCEPTED}',
+        ) from None
+
+    dims = q.dimensionality
+    if dims == ureg.Quantity(1.0, "kg/s").dimensionality:
+        return GasFlow("mass", float(q.to("kg/s").magnitude))
+    if dims == ureg.Quantity(1.0, "mol/s").dimensionality:
+        return GasFlow("molar", float(q.to("mol/s").magnitude))
+    if dims != ureg.Quantity(1.0, "m**3/s").dimensionality:
+        if state:
+            raise InputError(
+                field,
+                message=f'{field}: "{text}" is not a normal or standard volume per time, '
+                f'expected e.g. "12 Nm3/h", "0.8 SL/s", "10 scfm"',
+            )
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" is {_describe(q)}, expected {GAS_FLOW_ACCEPTED}',
+        )
+    volume = float(q.to("m**3/s").magnitude)
+    if state is not None:
+        own_t, own_p = {"N": NORMAL_STATE, "S": STANDARD_STATE, "scf": SCF_STATE}[state]
+        for given, own, key, unit_si in (
+            (t_ref, own_t, t_field, "K"),
+            (p_ref, own_p, p_field, "Pa"),
+        ):
+            if given is not None and not math.isclose(given, own, rel_tol=1e-6):
+                raise InputError(
+                    field,
+                    message=f'{field}: "{text}" is {_STATE_NAMES[state]} but {key} is '
+                    f"{given:.6g} {unit_si}: ambiguous; give either a plain volume flow (e.g. "
+                    f'"{m.group(1)} m3/h") with {key}, or drop {key}',
+                )
+        t_ref, p_ref = own_t, own_p
+    elif t_ref is None:
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" is a volume flow at an unstated temperature and '
+            "pressure; expected a normal volume flow such as 12 Nm3/h, a mass flow (kg/h) or a "
+            f"molar flow (mol/s), or give {t_field}",
+        )
+    elif p_ref is None:
+        p_ref = 101325.0
+    return GasFlow("molar", p_ref * volume / (R_GAS * t_ref), t_ref, p_ref)

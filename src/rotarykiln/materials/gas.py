@@ -16,6 +16,8 @@ enthalpy; no reactions inside the table).
 
 from __future__ import annotations
 
+import difflib
+import math
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -32,6 +34,8 @@ __all__ = [
     "parse_composition",
     "BurntGas",
     "burn_fuel",
+    "check_composition",
+    "molar_mass",
 ]
 
 R_UNIVERSAL = 8.314462618  # J/(mol K)
@@ -276,3 +280,184 @@ def burn_fuel(
         )
     t_ad = float(brentq(lambda t: float(table.enthalpy(t)) - target, lo, hi))
     return BurntGas(comp, m, t_in, t_ad, q, table)
+
+
+# --------------------------------------------------------------------------------------------
+# Checked fuel and gas compositions (issue 10): every species a GRI-Mech 3.0 species, every
+# fraction finite and >= 0, the fractions summing to 1.
+
+COMPOSITION_TOLERANCE = 1e-3
+"""How far from 1 the mole fractions given to :func:`check_composition` may sum."""
+
+_COMPOSITION_FORM = 'mole fractions summing to 1 as "CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"'
+
+
+@lru_cache(maxsize=1)
+def _gri30_species() -> dict[str, tuple[str, float]]:
+    """GRI-Mech 3.0 species: lower-case name -> (gri30 spelling, molar mass in kg/mol).
+
+    Cantera is loaded once per process (a few tenths of a second).
+    """
+    import cantera as ct
+
+    gas = ct.Solution(MECHANISM)
+    return {
+        name.lower(): (name, float(w) / 1000.0)
+        for name, w in zip(gas.species_names, gas.molecular_weights, strict=True)
+    }
+
+
+def _composition_items(composition, field: str) -> list[tuple[str, object]]:
+    shown = f'"{composition}"' if isinstance(composition, str) else repr(composition)
+    if isinstance(composition, str):
+        items = []
+        for part in composition.split(","):
+            if not part.strip():
+                continue
+            if part.count(":") != 1:
+                raise InputError(
+                    field,
+                    composition,
+                    message=f'{field}: {shown} has "{part.strip()}", not "species:fraction"; '
+                    f"expected {_COMPOSITION_FORM}",
+                )
+            name, value = part.split(":")
+            items.append((name.strip(), value.strip()))
+        return items
+    try:
+        pairs = composition.items() if hasattr(composition, "items") else composition
+        return [(str(name).strip(), value) for name, value in pairs]
+    except (TypeError, ValueError):
+        raise InputError(
+            field,
+            composition,
+            message=f"{field}: {shown} is not a composition; expected {_COMPOSITION_FORM}",
+        ) from None
+
+
+def check_composition(text, field: str) -> tuple[tuple[str, float], ...]:
+    """Check a gas or fuel composition and return it normalised, in GRI-Mech 3.0 spelling.
+
+    Species are matched to the GRI-Mech 3.0 (``gri30.yaml``) names ignoring case (``"Ar"`` ->
+    ``"AR"``, ``"ch4"`` -> ``"CH4"``). Refused with :class:`~rotarykiln.errors.InputError`, on
+    one line naming ``field``, the value and what is accepted: an empty composition, a part
+    that is not ``species:fraction``, an unknown or repeated species, a fraction that is not a
+    finite number >= 0, and fractions that do not sum to 1 within 1e-3.
+
+    Parameters
+    ----------
+    text : str
+        Mole fractions, e.g. ``"CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"``; a mapping or a
+        sequence of ``(species, fraction)`` pairs is also accepted.
+    field : str
+        Dotted path of the field (``"burner.fuel"``), named in error messages.
+
+    Returns
+    -------
+    tuple of (str, float)
+        ``(gri30 name, mole fraction)`` pairs sorted by name, fractions [-] divided by their
+        sum, zero fractions dropped (the form :func:`parse_composition` returns).
+
+    Examples
+    --------
+    >>> check_composition("CH4:0.95, C2H6:0.03, N2:0.01, co2:0.01", "burner.fuel")
+    (('C2H6', 0.03), ('CH4', 0.95), ('CO2', 0.01), ('N2', 0.01))
+    >>> check_composition("CH4:0.95, C2H6:0.03", "burner.fuel")
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: burner.fuel: "CH4:0.95, C2H6:0.03" has mole fractions summing to 0.98, expected 1 (within 0.001)
+
+    References
+    ----------
+    G.P. Smith et al., GRI-Mech 3.0 (http://combustion.berkeley.edu/gri-mech/), as shipped
+    with Cantera (https://cantera.org).
+    """
+    shown = f'"{text}"' if isinstance(text, str) else repr(text)
+    items = _composition_items(text, field)
+    if not items:
+        raise InputError(
+            field, text, message=f"{field}: {shown} is empty; expected {_COMPOSITION_FORM}"
+        )
+    species = _gri30_species()
+    unknown = [name for name, _ in items if name.lower() not in species]
+    if unknown:
+        hints = []
+        for name in unknown:
+            close = difflib.get_close_matches(name.upper(), [s for s, _ in species.values()], 1)
+            hints.append(f'"{name}"' + (f' (did you mean "{close[0]}"?)' if close else ""))
+        raise InputError(
+            field,
+            text,
+            message=f"{field}: {shown} has unknown species {', '.join(hints)}; expected species "
+            f"of {MECHANISM} (case ignored), e.g. CH4, C2H6, C3H8, H2, CO, CO2, H2O, N2, O2, AR",
+        )
+    fractions: dict[str, float] = {}
+    for name, value in items:
+        gri = species[name.lower()][0]
+        if gri in fractions:
+            raise InputError(
+                field, text, message=f"{field}: {shown} gives {gri} twice; give each species once"
+            )
+        try:
+            if isinstance(value, bool):
+                raise TypeError
+            x = float(value)
+        except (TypeError, ValueError):
+            raise InputError(
+                field,
+                text,
+                message=f'{field}: {shown}: the fraction "{value}" of {gri} is not a number; '
+                f"expected {_COMPOSITION_FORM}",
+            ) from None
+        if not math.isfinite(x) or x < 0:
+            raise InputError(
+                field,
+                text,
+                message=f"{field}: {shown}: the fraction {x:g} of {gri} is not a finite number "
+                f">= 0; expected {_COMPOSITION_FORM}",
+            )
+        fractions[gri] = x
+    total = math.fsum(fractions.values())
+    if abs(total - 1.0) > COMPOSITION_TOLERANCE:
+        hint = " (percentages? divide them by 100)" if abs(total - 100.0) <= 0.1 else ""
+        raise InputError(
+            field,
+            text,
+            message=f"{field}: {shown} has mole fractions summing to {total:.6g}, expected 1 "
+            f"(within {COMPOSITION_TOLERANCE:g}){hint}",
+        )
+    return parse_composition(fractions)
+
+
+def molar_mass(composition) -> float:
+    """Molar mass of a mixture of GRI-Mech 3.0 species, :math:`M = \\sum_i x_i M_i`.
+
+    The composition is checked by :func:`check_composition` (field ``"composition"``); the
+    species molar masses :math:`M_i` are Cantera's, from the elements of ``gri30.yaml``.
+
+    Parameters
+    ----------
+    composition : str or mapping
+        Mole fractions [-] summing to 1, e.g. ``"CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"``,
+        or the tuple :func:`check_composition` returns.
+
+    Returns
+    -------
+    float, kg/mol
+        Mean molar mass of the mixture.
+
+    Examples
+    --------
+    >>> round(molar_mass("CH4:1") * 1e3, 3)  # g/mol
+    16.043
+    >>> round(molar_mass("O2:0.2095, N2:0.7808, Ar:0.0097"), 5)  # dry air, kg/mol
+    0.02896
+
+    References
+    ----------
+    G.P. Smith et al., GRI-Mech 3.0 (http://combustion.berkeley.edu/gri-mech/); molar masses
+    from Cantera (https://cantera.org).
+    """
+    species = _gri30_species()
+    pairs = check_composition(composition, "composition")
+    return math.fsum(x * species[name.lower()][1] for name, x in pairs)
