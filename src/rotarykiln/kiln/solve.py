@@ -142,6 +142,7 @@ def solve_heat(
         )
     # validity ranges of the closures, checked once on the converged state
     res.coefficients(fluxes["t_gas_mean"], fluxes["t_bed_mean"], x[:, 2], check=True)
+    kiln.solid.check_range(tb_nodes)  # the solid's c_p fit (phases, ranges in solids.yaml)
     return KilnSolution(
         name=kiln.name,
         **steady.profile_fields(

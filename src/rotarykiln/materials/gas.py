@@ -25,7 +25,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 from scipy.optimize import brentq
 
-from rotarykiln.errors import InputError, check_positive
+from rotarykiln.errors import InputError, check_positive, warn_out_of_range
 
 __all__ = [
     "GasPropertyTable",
@@ -81,8 +81,10 @@ class GasPropertyTable:
 
     Build it with :func:`gas_table` (cached per composition). Attributes: ``composition``
     (mole fractions), ``molar_mass`` (kg/mol), ``x_co2``, ``x_h2o`` (mole fractions used by the
-    gas radiation models), and the fitted splines. Valid 200-3200 K; evaluation outside is
-    clamped to that range (the solver keeps temperatures inside it).
+    gas radiation models), and the fitted splines. Valid 200-3200 K (the sampled range);
+    outside it cp, conductivity and viscosity are clamped to the end values and the enthalpy is
+    extended linearly, without a warning in the hot loop: call :meth:`check_range` once on a
+    converged state to be warned.
     """
 
     composition: tuple[tuple[str, float], ...]
@@ -93,6 +95,28 @@ class GasPropertyTable:
     _h: object = field(repr=False)
     _k: CubicSpline = field(repr=False)
     _mu: CubicSpline = field(repr=False)
+
+    def check_range(self, T) -> bool:
+        """Warn once if any ``T`` (K) lies outside the fitted 200-3200 K (values clamped there).
+
+        Returns True when an :class:`~rotarykiln.errors.OutOfRangeWarning` was issued; it
+        shows the span outside the range. Not called by the property methods (solver loops).
+
+        Examples
+        --------
+        >>> import warnings
+        >>> with warnings.catch_warnings():
+        ...     warnings.simplefilter("error")
+        ...     air_table().check_range([300.0, 1500.0])
+        False
+        """
+        return warn_out_of_range(
+            "gas temperature [K]",
+            T,
+            T_MIN,
+            T_MAX,
+            f"the Cantera property table ({MECHANISM}; clamped outside)",
+        )
 
     def cp(self, T):
         """Specific heat at constant pressure, J/(kg K), at temperature ``T`` (K)."""
