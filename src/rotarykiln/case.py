@@ -35,7 +35,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal
 
 import yaml
-from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
+from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError, model_validator
 from pydantic_core import PydanticCustomError
 
 from rotarykiln.errors import InputError
@@ -47,6 +47,7 @@ __all__ = [
     "Angle",
     "Bed",
     "Burner",
+    "BurnerAir",
     "Heat",
     "HeatClosures",
     "HeatGas",
@@ -217,24 +218,136 @@ SolidName = Annotated[str, BeforeValidator(_library_name("solids.yaml"))]
 LiningMaterialName = Annotated[str, BeforeValidator(_library_name("refractories.yaml"))]
 
 
-class LiningLayer(Section):
-    """One lining layer (``heat.lining``, ``chemistry.lining``): a library material, a thickness
-    and the stretches (from z, to z) where it is absent."""
+class LiningMaterialSpec(Section):
+    """A lining material given in the case file: conductivity k(T) = k0 + k1 T + k2 T^2
+    (``k``: [k0 W/(m K), k1 W/(m K2), k2 W/(m K3)], T in K), surface emissivity and service
+    limit."""
 
-    material: LiningMaterialName
+    name: str
+    k: Annotated[list[float], BeforeValidator(lambda v: _k_coefficients(v))]
+    emissivity: Fraction = 0.85
+    t_max: Temperature = 1700.0
+
+
+def _k_coefficients(v: Any) -> list[float]:
+    if (
+        not isinstance(v, list)
+        or not 1 <= len(v) <= 3
+        or not all(isinstance(x, int | float) and not isinstance(x, bool) for x in v)
+        or not all(math.isfinite(x) for x in v)
+    ):
+        raise PydanticCustomError(
+            "number",
+            "{value} is not a list [k0, k1, k2] of finite numbers (k = k0 + k1 T + k2 T^2, "
+            "W/(m K), T in K)",
+            {"value": v},
+        )
+    return [float(x) for x in v] + [0.0] * (3 - len(v))
+
+
+class LiningLayer(Section):
+    """One lining layer (``heat.lining``, ``chemistry.lining``): a library material (or one
+    given inline), a thickness and the stretches (from z, to z) where it is absent."""
+
+    material: LiningMaterialName | LiningMaterialSpec
     thickness: Length
     absent: list[tuple[Position, Position]] = []
 
 
-class Burner(Section):
-    """Fuel and air burnt completely; the heat is released along a flame inside the kiln."""
+def _gas_flow_text(v: Any) -> Any:
+    """A burner flow as given: a string with its unit (converted by :class:`Burner`)."""
+    if isinstance(v, bool) or not isinstance(v, str | int | float):
+        raise PydanticCustomError(
+            "number", '{value} is not a gas flow with a unit ("2.2 kg/h", "12 Nm3/h")', {"value": v}
+        )
+    return v
 
-    fuel: str = "CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"
-    fuel_flow: MassFlow
-    air_flow: MassFlow
+
+def _fuel_composition(v: Any) -> str:
+    from rotarykiln.materials.gas import check_composition
+
+    try:
+        pairs = check_composition(v, "")
+    except InputError as exc:
+        raise PydanticCustomError("number", "{msg}", {"msg": str(exc).removeprefix(": ")}) from None
+    return ", ".join(f"{k}:{x:.12g}" for k, x in pairs)
+
+
+GasFlowText = Annotated[Any, BeforeValidator(_gas_flow_text)]
+
+
+class BurnerAir(Section):
+    """An air stream of the burner: its flow (mass, molar or normal volume) and temperature."""
+
+    flow: GasFlowText
     temperature: Temperature = 298.15
-    flame_start: Position = 0.0
-    flame_length: Length = 1.0
+
+
+class Burner(Section):
+    """A burner at the gas inlet end (see docs/heat.md, "Burner and flame").
+
+    ``fuel``: composition by mole; ``fuel_flow`` and the air flows as mass flows ("2.2 kg/h"),
+    molar flows ("0.1 mol/s") or normal volume flows ("12 Nm3/h", "0.83 NL/s" at 0 degC and
+    1 atm; "Sm3/h" at 15 degC); a plain volume flow ("1.42 L/s") needs
+    ``reference_temperature`` (and ``reference_pressure``, default 1 atm).
+    ``combustion``: ``instant`` (burn-out at the burner) or ``burnout`` (mixing-limited along
+    the flame, which needs ``flame_length`` or ``nozzle_diameter``).
+    """
+
+    fuel: Annotated[str, BeforeValidator(_fuel_composition)] = (
+        "CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"
+    )
+    fuel_flow: GasFlowText
+    fuel_temperature: Temperature = 298.15
+    primary_air: BurnerAir | None = None
+    secondary_air: BurnerAir | None = None
+    reference_temperature: Temperature | None = None
+    reference_pressure: Pressure | None = None
+    nozzle_diameter: Length | None = None
+    combustion: Literal["instant", "burnout"] = "instant"
+    flame_length: Length | None = None
+
+    @model_validator(mode="after")
+    def _flows(self):
+        self.mass_flows()
+        return self
+
+    def mass_flows(self) -> tuple[float, float, float]:
+        """Fuel, primary air and secondary air mass flows, kg/s (refused: no air, bad flows)."""
+        from rotarykiln.materials.gas import molar_mass
+        from rotarykiln.units import gas_flow
+
+        def convert(name, value, mm, allow_zero=False):
+            try:
+                f = gas_flow(
+                    value,
+                    name,
+                    reference_temperature=self.reference_temperature,
+                    reference_pressure=self.reference_pressure,
+                    allow_zero=allow_zero,
+                )
+            except InputError as exc:
+                raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
+            return f.mass_flow(mm)
+
+        if self.primary_air is None and self.secondary_air is None:
+            raise PydanticCustomError(
+                "number",
+                "fuel without air: give primary_air (and secondary_air) with their flows",
+                {},
+            )
+        air_mm = molar_mass("O2:0.21, N2:0.79")
+        fuel = convert("fuel_flow", self.fuel_flow, molar_mass(self.fuel))
+        prim = sec = 0.0
+        if self.primary_air is not None:
+            prim = convert("primary_air.flow", self.primary_air.flow, air_mm, True)
+        if self.secondary_air is not None:
+            sec = convert("secondary_air.flow", self.secondary_air.flow, air_mm, True)
+        if prim + sec <= 0:
+            raise PydanticCustomError(
+                "number", "fuel without air: the air flows sum to 0 (a flame needs air)", {}
+            )
+        return fuel, prim, sec
 
 
 class HeatGas(Section):
@@ -267,6 +380,8 @@ class HeatMeasurements(Section):
     t_bed: list[Temperature] = []
     z_wall: list[Position] = []
     t_wall: list[Temperature] = []
+    z_gas_wall: list[Position] = []
+    t_gas_wall: list[Temperature] = []
     wall_interface: int = 0
 
 

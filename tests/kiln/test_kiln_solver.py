@@ -60,14 +60,16 @@ def test_flame_case_radiation_share(flame_kiln):
     assert on.gas_outlet_temperature < off.gas_outlet_temperature
 
 
-@pytest.mark.parametrize("which", ["tscheng", "flame"])
-def test_mesh_doubling_below_one_kelvin(which, flame_kiln):
+@pytest.mark.parametrize(("which", "tol"), [("tscheng", 1.0), ("flame", 2.0)])
+def test_mesh_doubling_below_tolerance(which, tol, flame_kiln):
+    # the fired kiln enters at its adiabatic flame temperature: the steepest gradients are at
+    # the burner, where mesh doubling moves the gas by ~1 K (issue 10 asks < 2 K)
     kiln = tscheng_kiln("A16") if which == "tscheng" else flame_kiln
     a = solve_heat(kiln, 100)
     b = solve_heat(kiln, 200)
     for x, y in ((a.t_gas_nodes, b.t_gas_nodes[::2]), (a.t_bed_nodes, b.t_bed_nodes[::2])):
-        assert np.max(np.abs(x - y)) < 1.0
-    assert np.max(np.abs(a.t_wall - 0.5 * (b.t_wall[::2] + b.t_wall[1::2]))) < 1.0
+        assert np.max(np.abs(x - y)) < tol
+    assert np.max(np.abs(a.t_wall - 0.5 * (b.t_wall[::2] + b.t_wall[1::2]))) < tol
 
 
 def test_co_current():

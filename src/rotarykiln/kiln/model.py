@@ -95,6 +95,8 @@ class HeatKiln:
     Wall: ``layers`` (inner to outer, :class:`Layer`), ``wall_emissivity`` (inner surface,
     default that of the first layer material), ``shell_emissivity`` (default that of the last
     layer), ``ambient_temperature`` (K), ``wind_speed`` (m/s).
+    ``flame``: the :class:`~rotarykiln.kiln.flame.Flame` of a burner (its heating values and
+    jet numbers enter the energy balance sheet and the summary), or None.
     ``closures``: :class:`Closures`. ``measurements``: optional dict of arrays
     (``z_gas``, ``t_gas``, ``z_bed``, ``t_bed``, ``z_wall``, ``t_wall``) overlaid on plots.
     """
@@ -121,6 +123,7 @@ class HeatKiln:
     closures: Closures = field(default_factory=Closures)
     measurements: dict | None = None
     name: str = "kiln"
+    flame: object | None = None
 
     def __post_init__(self):
         check_positive("kiln.length", self.length, "m")

@@ -6,7 +6,12 @@ import numpy as np
 
 __all__ = ["plot_temperature_profiles", "heat_flow_columns"]
 
-_MEASURED = (("gas", "tab:red", "o"), ("bed", "tab:brown", "s"), ("wall", "tab:gray", "^"))
+_MEASURED = (
+    ("gas", "tab:red", "o"),
+    ("gas_wall", "tab:orange", "D"),
+    ("bed", "tab:brown", "s"),
+    ("wall", "tab:gray", "^"),
+)
 
 
 def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
@@ -27,7 +32,7 @@ def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
         ax.plot(sol.z, t_shell, color="tab:blue", ls="--", label="shell")
     m = measurements or {}
     for key, color, marker in _MEASURED:
-        if f"z_{key}" in m and f"t_{key}" in m:
+        if len(m.get(f"z_{key}", ())) and len(m.get(f"t_{key}", ())):
             ax.plot(
                 m[f"z_{key}"],
                 m[f"t_{key}"],
@@ -35,7 +40,7 @@ def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
                 marker=marker,
                 mfc="none",
                 color=color,
-                label=f"{key}, measured",
+                label=f"{key.replace('_', ' near ')}, measured",
             )
     ax.set_xlabel("z from solids inlet (m)")
     ax.set_ylabel("temperature (K)")

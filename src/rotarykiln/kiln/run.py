@@ -7,62 +7,54 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.coupling import bed_fill_profile
+from rotarykiln.kiln.flame import AirStream, Burner, fire
 from rotarykiln.kiln.model import Closures, HeatKiln
 from rotarykiln.kiln.run_files import write_solution_files
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_heat
 from rotarykiln.kiln.wall import layers_from_case
-from rotarykiln.materials.gas import burn_fuel, gas_table
+from rotarykiln.materials.gas import gas_table
 from rotarykiln.materials.solids import load_solid
 
 __all__ = [
-    "FlameProfile",
     "bed_fill_profile",
+    "burner_from_case",
     "heat_kiln_from_case",
     "run_heat_case",
     "heat_runner",
-    "flame_profile",
 ]
 
 
-@dataclass(frozen=True)
-class FlameProfile:
-    """Parabolic heat-release weight :math:`s(\\ell - s)` over the flame (picklable).
-
-    ``start`` and ``flame_length`` (m) are measured from the gas inlet (the burner end).
-    """
-
-    length: float
-    start: float
-    flame_length: float
-    counter_current: bool
-
-    def __call__(self, z):
-        z = np.asarray(z, dtype=float)
-        dist = (self.length - z) if self.counter_current else z
-        s = dist - self.start
-        return np.where((s > 0) & (s < self.flame_length), s * (self.flame_length - s), 0.0)
-
-
-def flame_profile(length: float, start: float, flame_length: float, counter_current: bool):
-    """Parabolic heat-release profile :math:`s(\\ell - s)` over the flame, s from its start.
-
-    ``start`` and ``flame_length`` are measured from the gas inlet (the burner end), m.
+def burner_from_case(section) -> Burner:
+    """The :class:`~rotarykiln.kiln.flame.Burner` of a case file's ``burner`` section.
 
     Examples
     --------
-    >>> w = flame_profile(5.0, 0.0, 1.0, True)
-    >>> [round(float(v), 3) for v in w(np.array([4.5, 3.0]))]
-    [0.25, 0.0]
+    >>> from rotarykiln.case import Burner as BurnerSection
+    >>> b = burner_from_case(BurnerSection(fuel="CH4:1", fuel_flow="2 kg/h",
+    ...                                    primary_air={"flow": "40 kg/h"}))
+    >>> round(b.fuel_flow * 3600, 6), round(b.air_flow * 3600, 6)
+    (2.0, 40.0)
     """
-    return FlameProfile(length, start, flame_length, counter_current)
+    fuel, primary, secondary = section.mass_flows()
+    t_p = section.primary_air.temperature if section.primary_air is not None else 298.15
+    t_s = section.secondary_air.temperature if section.secondary_air is not None else 298.15
+    return Burner(
+        fuel=section.fuel,
+        fuel_flow=fuel,
+        primary_air=AirStream(primary, t_p),
+        secondary_air=AirStream(secondary, t_s),
+        fuel_temperature=section.fuel_temperature,
+        nozzle_diameter=section.nozzle_diameter,
+        combustion=section.combustion,
+        flame_length=section.flame_length,
+    )
 
 
 def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
@@ -93,20 +85,14 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
     length = case.kiln.length
     kw = {}
     if h.burner is not None:
-        b = h.burner
-        burnt = burn_fuel(b.fuel, b.fuel_flow, b.air_flow, b.temperature, b.temperature)
-        if b.flame_start + b.flame_length > length:
-            raise InputError(
-                "heat.burner.flame_length", b.flame_length, "inside the kiln (start + length <= L)"
-            )
+        flame = fire(burner_from_case(h.burner), case.kiln.diameter, length)
         kw.update(
-            gas=burnt.table,
-            gas_flow=burnt.mass_flow,
-            gas_inlet_temperature=burnt.inlet_temperature,
-            heat_release=burnt.heat_release,
-            heat_release_profile=flame_profile(
-                length, b.flame_start, b.flame_length, h.counter_current
-            ),
+            gas=flame.products.table,
+            gas_flow=flame.products.mass_flow,
+            gas_inlet_temperature=flame.inlet_temperature,
+            heat_release=flame.heat_release,
+            heat_release_profile=flame.release_profile(length, h.counter_current),
+            flame=flame,
         )
     else:
         if h.gas.flow is None or h.gas.inlet_temperature is None:

@@ -23,6 +23,9 @@ class KilnSolution:
     gas->wall and gas->bed convection, covered wall->bed, radiation to wall and to bed, shell
     loss, sources; and the coefficients h_gw, h_gb, h_cw in W/(m2 K) and the gas emissivity).
     Summary: ``heat_to_solids``, ``heat_from_gas``, ``heat_release``, ``shell_loss`` (W),
+    ``energy_sheet`` (dict: fuel LHV/HHV input, sensible inputs, heat to solids, shell and
+    exhaust losses, closure, W; thermal efficiency), ``burner`` (dict of the burner's figures:
+    flame length, jet numbers, excess air; empty without a burner),
     ``energy_in``, ``energy_out`` (W, enthalpy flows relative to 298.15 K plus heat release and
     shell loss), ``balance_closure`` = (in - out)/heat_to_solids (-).
     Solver: ``iterations``, ``residual`` (max scaled residual), ``n_cells``.
@@ -53,6 +56,8 @@ class KilnSolution:
     n_cells: int
     counter_current: bool
     measurements: dict | None = field(default=None, repr=False)
+    energy_sheet: dict = field(default_factory=dict, repr=False)
+    burner: dict = field(default_factory=dict, repr=False)
 
     @property
     def bed_outlet_temperature(self) -> float:
@@ -66,7 +71,10 @@ class KilnSolution:
 
     @property
     def thermal_efficiency(self) -> float:
-        """Heat to the solids over the heat given up by the gas plus the heat release, -."""
+        """Heat to the solids over the fuel's LHV input (fired kilns), or over the heat given
+        up by the gas plus the heat release (kilns without a burner), -."""
+        if "thermal_efficiency" in self.energy_sheet:
+            return float(self.energy_sheet["thermal_efficiency"])
         supplied = self.heat_from_gas + self.heat_release
         return float(self.heat_to_solids / supplied) if supplied else float("nan")
 
@@ -97,6 +105,8 @@ class KilnSolution:
             "newton_iterations": self.iterations,
             "residual": self.residual,
             "cells": self.n_cells,
+            **{f"energy_{k}": v for k, v in self.energy_sheet.items() if k != "thermal_efficiency"},
+            **{f"burner_{k}": v for k, v in self.burner.items()},
         }
 
     def to_frame(self) -> pd.DataFrame:

@@ -14,7 +14,7 @@ from rotarykiln.kiln.residual import HeatResidual
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.sources import SourceTerms
 
-__all__ = ["solve_heat", "DEFAULT_CELLS"]
+__all__ = ["solve_heat", "energy_sheet", "DEFAULT_CELLS"]
 
 DEFAULT_CELLS = 100
 
@@ -46,6 +46,53 @@ def _initial_guess(kiln: HeatKiln, res: HeatResidual) -> np.ndarray:
             g.n, res.n_extra
         )
     return x
+
+
+def energy_sheet(kiln: HeatKiln, tb_nodes, t_g_in, t_g_out, shell_loss, release) -> dict:
+    """Energy balance sheet of a converged heat solve, W (and the efficiency, -).
+
+    Inputs: the fuel (its LHV and, for information, its HHV), the sensible enthalpy of the
+    gas and solids streams above 298.15 K, the heat of combustion as the model releases it
+    (``combustion_heat_W``; it differs from the LHV input only by the dissociation of the
+    products and the heat capacity of preheated streams); outputs: heat to the solids, shell
+    loss, exhaust (sensible enthalpy of the flue gas leaving); ``closure_W`` = in - out.
+    ``thermal_efficiency`` = heat to the solids / fuel LHV input (heat to the solids / heat
+    given up by the gas for a kiln without a burner).
+    """
+    h_s, h_g = kiln.solid.enthalpy, kiln.gas.enthalpy
+    m_s, m_g = kiln.solids_flow, kiln.gas_flow
+    solids_in = m_s * float(h_s(tb_nodes[0]))
+    to_solids = m_s * float(h_s(tb_nodes[-1]) - h_s(tb_nodes[0]))
+    exhaust = m_g * float(h_g(t_g_out))
+    flame = kiln.flame
+    if flame is not None:
+        gas_in = float(flame.sensible_input)
+        combustion = float(flame.products.heat_release)
+        lhv, hhv = float(flame.fuel_lhv), float(flame.fuel_hhv)
+        efficiency = to_solids / lhv
+    else:
+        gas_in = m_g * float(h_g(t_g_in))
+        combustion, lhv, hhv = float(release), 0.0, 0.0
+        supplied = gas_in - exhaust + combustion
+        efficiency = to_solids / supplied if supplied else float("nan")
+    if flame is not None and flame.combustion != "instant":
+        combustion = float(release)
+    total_in = solids_in + gas_in + combustion
+    total_out = solids_in + to_solids + shell_loss + exhaust
+    return {
+        "fuel_lhv_input_W": lhv,
+        "fuel_hhv_input_W": hhv,
+        "combustion_heat_W": combustion,
+        "sensible_input_gas_W": gas_in,
+        "sensible_input_solids_W": solids_in,
+        "heat_to_solids_sensible_W": to_solids,
+        "heat_to_solids_reaction_W": 0.0,
+        "shell_loss_W": float(shell_loss),
+        "exhaust_loss_W": exhaust,
+        "closure_W": total_in - total_out,
+        "closure_relative": (total_in - total_out) / max(total_in, 1.0),
+        "thermal_efficiency": efficiency,
+    }
 
 
 def solve_heat(
@@ -134,6 +181,7 @@ def solve_heat(
     e_out += shell_loss
     denom = heat_to_solids if abs(heat_to_solids) > 0 else q_ref
     closure = (e_in - e_out) / denom
+    sheet = energy_sheet(kiln, tb_nodes, t_g_in, t_g_out, shell_loss, release)
     if abs(closure) > 1e-6:
         warnings.warn(
             f"energy balance closes only to {closure:.3g} of the heat to the solids",
@@ -158,7 +206,9 @@ def solve_heat(
         energy_in=e_in,
         energy_out=e_out,
         balance_closure=float(closure),
+        energy_sheet=sheet,
         n_cells=grid.n,
         counter_current=kiln.counter_current,
         measurements=kiln.measurements,
+        burner=kiln.flame.summary() if kiln.flame is not None else {},
     )

@@ -41,11 +41,16 @@ def layers_from_case(lining, section: str = "heat") -> tuple[Layer, ...]:
     ('fireclay_brick', 0.1)
     """
     from rotarykiln.errors import InputError
-    from rotarykiln.materials.lining import load_lining_material
+    from rotarykiln.materials.lining import LiningMaterial, load_lining_material
+
+    def material(spec):
+        if isinstance(spec, str):
+            return load_lining_material(spec)
+        return LiningMaterial(spec.name, tuple(spec.k), spec.emissivity, spec.t_max)
 
     layers = tuple(
         Layer(
-            load_lining_material(layer.material),
+            material(layer.material),
             layer.thickness,
             absent=tuple(tuple(a) for a in layer.absent),
         )

@@ -1,0 +1,532 @@
+r"""The burner of a direct-fired kiln: its streams, its flame and where the fuel burns.
+
+A burner at the gas inlet end fires ``fuel`` with a primary air stream (through the burner,
+mixed with the fuel in the nozzle fluid) and a secondary air stream (around it: from the cooler
+or the hood). :func:`fire` turns those inputs into what the kiln's gas balance needs:
+
+- the **products** of complete combustion of all the fuel with all the air (Cantera,
+  GRI-Mech 3.0 thermochemistry, water as vapour): their property table, mass flow, the
+  temperature of the unburnt mixture (the streams mixed at constant enthalpy), the heat of
+  combustion at that state and the adiabatic temperature of the fully mixed products;
+- the **heating values** of the fuel input, LHV and HHV (W), for the energy balance sheet;
+- the **jet numbers** of the burner (when the nozzle diameter is given): Thring-Newby
+  equivalent nozzle diameter :math:`d_e = 2\dot m_0/\sqrt{\pi\rho_a \dot G_0}`, the
+  Thring-Newby parameter :math:`\theta = (1 + \dot m_a/\dot m_0)\,d_e/D` (close to the
+  Craya-Curtet number; recirculation below about 0.75), the distance over which the jet
+  entrains all the secondary air :math:`x_s = d_e(\dot m_0 + \dot m_a)/(C_e \dot m_0)`
+  (Ricou-Spalding, :math:`C_e = 0.32`), the recirculation-zone length
+  :math:`x_w = (R - d_e/2)/0.2`, and the flame length of Hawthorne, Weddell & Hottel for the
+  nozzle fluid (fuel + primary air)
+
+  .. math:: \frac{L_f}{d_0} = \frac{5.3}{C_T}\sqrt{\frac{T_F}{\alpha_T T_N}
+            \left[C_T + (1 - C_T)\frac{M_s}{M_N}\right]}
+
+  with :math:`C_T` the mole fraction of nozzle fluid in its stoichiometric mixture with air
+  (1 when the nozzle fluid is already lean), :math:`T_F` its adiabatic flame temperature,
+  :math:`\alpha_T = 1`;
+- **where the fuel burns**, by the combustion model:
+
+  - ``instant`` (default): the fuel burns completely where it enters (Hanein et al. 2017, the
+    SimCem kiln): the gas enters at the adiabatic temperature of the fully mixed products. It
+    is the upper bound of the mixed-cup gas temperature the mixing model allows;
+  - ``burnout``: mixing-limited burn-out along the flame, the self-similar jet profile of
+    flames.md section 2, with :math:`\xi = x/L_f` and :math:`m = 1.4`
+
+    .. math:: X_b(\xi) = \xi^{1+m} + \xi\frac{1+m}{m}(1 - \xi^m),\qquad
+              q'(x) = Q\,\frac{dX_b}{dx} = \frac{Q}{L_f}\frac{1+m}{m}(1 - \xi^m)
+
+    the heat released into the mixed gas, which enters at the temperature of the unburnt
+    mixture. It needs the flame length (``flame_length``, or the nozzle diameter for the
+    Hawthorne-Weddell-Hottel length).
+
+References
+----------
+T. Hanein, F.P. Glasser, M.N. Bannerman, Adv. Appl. Ceram. 116 (2017) 207 (instant burn-out);
+M.W. Thring, M.P. Newby, 4th Symp. Combust. (1953) 789 (equivalent nozzle, recirculation);
+F.P. Ricou, D.B. Spalding, J. Fluid Mech. 11 (1961) 21 (entrainment 0.32);
+W.R. Hawthorne, D.S. Weddell, H.C. Hottel, 3rd Symp. Combust. (1949) 266 (flame length);
+flames.md sections 1, 2 and 7 of the project's reference notes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from rotarykiln.errors import InputError, check_positive
+from rotarykiln.materials.gas import (
+    MECHANISM,
+    R_UNIVERSAL,
+    T_REF,
+    BurntGas,
+    burn_fuel,
+    parse_composition,
+)
+
+__all__ = [
+    "AIR",
+    "AirStream",
+    "Burner",
+    "Flame",
+    "fire",
+    "burnout_fraction",
+    "heating_values",
+    "hawthorne_flame_length",
+    "COMBUSTION_MODELS",
+]
+
+#: Dry air by mole, as burnt by :func:`rotarykiln.materials.gas.burn_fuel`.
+AIR = "O2:0.21, N2:0.79"
+AIR_MOLAR_MASS = 0.21 * 0.031998 + 0.79 * 0.0280134  # kg/mol
+COMBUSTION_MODELS = ("instant", "burnout")
+ENTRAINMENT = 0.32  # Ricou & Spalding (1961), far field
+JET_SPREAD = 0.2  # half-width growth rate of a round jet, flames.md section 2
+BURNOUT_EXPONENT = 1.4  # width ratio squared of the mixture-fraction and velocity profiles
+H2O_VAPORISATION = 44.004e3  # J/mol at 298.15 K
+
+
+@dataclass(frozen=True)
+class AirStream:
+    """An air stream into the burner end: ``flow`` (kg/s) and ``temperature`` (K)."""
+
+    flow: float
+    temperature: float = T_REF
+
+    def __post_init__(self):
+        if not np.isfinite(self.flow) or self.flow < 0:
+            raise InputError("burner.air.flow", self.flow, ">= 0 kg/s")
+        check_positive("burner.air.temperature", self.temperature, "K")
+
+
+@dataclass(frozen=True)
+class Burner:
+    """Burner inputs in SI units.
+
+    ``fuel``: composition by mole (``"CH4:1"``); ``fuel_flow`` (kg/s); ``fuel_temperature`` (K);
+    ``primary_air``, ``secondary_air`` (:class:`AirStream`); ``nozzle_diameter`` (m, of the
+    nozzle carrying fuel and primary air; None if unknown); ``combustion`` (one of
+    :data:`COMBUSTION_MODELS`); ``flame_length`` (m, an override of the computed length);
+    ``entrainment`` (-, Ricou-Spalding constant).
+    """
+
+    fuel: str
+    fuel_flow: float
+    primary_air: AirStream
+    secondary_air: AirStream = AirStream(0.0)
+    fuel_temperature: float = T_REF
+    nozzle_diameter: float | None = None
+    combustion: str = "instant"
+    flame_length: float | None = None
+    entrainment: float = ENTRAINMENT
+
+    def __post_init__(self):
+        check_positive("burner.fuel_flow", self.fuel_flow, "kg/s")
+        check_positive("burner.fuel_temperature", self.fuel_temperature, "K")
+        if self.air_flow <= 0:
+            raise InputError(
+                "burner.primary_air.flow", self.primary_air.flow, "> 0 kg/s (a fuel needs air)"
+            )
+        if self.combustion not in COMBUSTION_MODELS:
+            raise InputError("burner.combustion", self.combustion, " or ".join(COMBUSTION_MODELS))
+        if self.nozzle_diameter is not None:
+            check_positive("burner.nozzle_diameter", self.nozzle_diameter, "m")
+        if self.flame_length is not None:
+            check_positive("burner.flame_length", self.flame_length, "m")
+        check_positive("burner.entrainment", self.entrainment)
+
+    @property
+    def air_flow(self) -> float:
+        """Primary plus secondary air, kg/s."""
+        return self.primary_air.flow + self.secondary_air.flow
+
+
+@dataclass(frozen=True)
+class Flame:
+    """What the kiln's gas balance needs from the burner (see the module docstring).
+
+    ``products`` (:class:`~rotarykiln.materials.gas.BurntGas`: table, mass flow, unburnt
+    mixture temperature, heat of combustion ``heat_release`` W, adiabatic temperature);
+    ``fuel_lhv``, ``fuel_hhv`` (W, heating values of the fuel input at 298.15 K);
+    ``sensible_input`` (W, enthalpy of the streams above 298.15 K); ``excess_air`` (-, air
+    over stoichiometric air) and ``primary_excess_air`` (-, primary air only); jet numbers
+    (None without a nozzle diameter): ``equivalent_diameter`` (m), ``nozzle_velocity`` (m/s),
+    ``thring_newby`` (-), ``entrainment_length`` (m), ``recirculation_length`` (m),
+    ``recirculating`` (bool); ``flame_length`` (m, given, or Hawthorne-Weddell-Hottel, or
+    None); ``combustion`` (model name).
+    """
+
+    burner: Burner
+    products: BurntGas
+    fuel_lhv: float
+    fuel_hhv: float
+    sensible_input: float
+    excess_air: float
+    primary_excess_air: float
+    equivalent_diameter: float | None
+    nozzle_velocity: float | None
+    thring_newby: float | None
+    entrainment_length: float | None
+    recirculation_length: float | None
+    recirculating: bool | None
+    flame_length: float | None
+    combustion: str
+
+    @property
+    def inlet_temperature(self) -> float:
+        """Temperature at which the gas enters the kiln's gas balance, K."""
+        if self.combustion == "instant":
+            return self.products.adiabatic_temperature
+        return self.products.inlet_temperature
+
+    @property
+    def heat_release(self) -> float:
+        """Heat released inside the kiln's gas balance, W (0 for instant burn-out)."""
+        return 0.0 if self.combustion == "instant" else self.products.heat_release
+
+    def release_profile(self, length: float, counter_current: bool):
+        """Weights of the heat release over cells (callable of cell centres z, m), or None."""
+        if self.combustion == "instant":
+            return None
+        return BurnoutProfile(length, float(self.flame_length), counter_current)
+
+    def summary(self) -> dict:
+        """The burner's figures, SI units, for the run summary."""
+        out = {
+            "combustion_model": self.combustion,
+            "fuel_lhv_input_W": self.fuel_lhv,
+            "fuel_hhv_input_W": self.fuel_hhv,
+            "excess_air": self.excess_air,
+            "primary_excess_air": self.primary_excess_air,
+            "adiabatic_temperature_K": self.products.adiabatic_temperature,
+            "flue_gas_flow_kg_s": self.products.mass_flow,
+        }
+        for key, value in (
+            ("flame_length_m", self.flame_length),
+            ("equivalent_nozzle_diameter_m", self.equivalent_diameter),
+            ("nozzle_velocity_m_s", self.nozzle_velocity),
+            ("thring_newby_parameter", self.thring_newby),
+            ("entrainment_length_m", self.entrainment_length),
+            ("recirculation_length_m", self.recirculation_length),
+        ):
+            if value is not None:
+                out[key] = value
+        return out
+
+
+@dataclass(frozen=True)
+class BurnoutProfile:
+    """Heat-release weights of the ``burnout`` model per cell (picklable callable of z)."""
+
+    length: float
+    flame_length: float
+    counter_current: bool
+
+    def __call__(self, z):
+        z = np.asarray(z, dtype=float)
+        if z.size == 1:
+            edges = np.array([0.0, self.length])
+        else:
+            mid = 0.5 * (z[1:] + z[:-1])
+            edges = np.concatenate([[0.0], mid, [self.length]])
+        x = (self.length - edges) if self.counter_current else edges
+        xb = burnout_fraction(x / self.flame_length)
+        return np.abs(np.diff(xb)) + 0.0
+
+
+def burnout_fraction(xi, m: float = BURNOUT_EXPONENT):
+    r"""Burnt fraction of the fuel along a turbulent jet flame, self-similar profiles.
+
+    .. math:: X_b(\xi) = \xi^{1+m} + \xi\frac{1+m}{m}(1 - \xi^m),\quad 0 \le \xi \le 1;
+              \qquad X_b = 1 \text{ for } \xi > 1
+
+    Parameters
+    ----------
+    xi : float or array, -
+        Distance from the burner over the flame length (clipped to [0, 1]).
+    m : float, -
+        Ratio of the mixture-fraction to the velocity profile widths, squared (1.4).
+
+    Returns
+    -------
+    float or array, -
+        Burnt fraction.
+
+    Examples
+    --------
+    >>> [round(float(burnout_fraction(v)), 2) for v in (0.25, 0.5, 1.0)]
+    [0.4, 0.72, 1.0]
+
+    References
+    ----------
+    flames.md section 2 (recommended burn-out profile: Gaussian self-similar velocity and
+    mixture-fraction profiles, fast chemistry at the stoichiometric mixture fraction).
+    """
+    xi = np.clip(np.asarray(xi, dtype=float), 0.0, 1.0)
+    return xi ** (1.0 + m) + xi * (1.0 + m) / m * (1.0 - xi**m)
+
+
+def hawthorne_flame_length(
+    nozzle_diameter, c_t, t_flame, t_nozzle, m_surroundings, m_nozzle, alpha_t=1.0
+):
+    r"""Length of a turbulent jet diffusion flame (Hawthorne, Weddell & Hottel 1949).
+
+    .. math:: \frac{L_f}{d} = \frac{5.3}{C_T}\sqrt{\frac{T_F}{\alpha_T T_N}
+              \left[C_T + (1 - C_T)\frac{M_s}{M_N}\right]}
+
+    Parameters
+    ----------
+    nozzle_diameter : float, m
+    c_t : float, -
+        Mole fraction of nozzle fluid in its stoichiometric mixture with the surroundings.
+    t_flame, t_nozzle : float, K
+        Adiabatic flame temperature of that mixture; temperature of the nozzle fluid.
+    m_surroundings, m_nozzle : float, kg/mol
+        Molar masses of the surrounding fluid and of the nozzle fluid.
+    alpha_t : float, -
+        Moles of reactants per mole of products (about 1 for methane and air).
+
+    Returns
+    -------
+    float, m
+
+    Examples
+    --------
+    Pure methane into air (C_T = 0.095, T_F = 2225 K): about 200 nozzle diameters.
+
+    >>> round(hawthorne_flame_length(1.0, 0.095, 2225.0, 298.15, 0.02885, 0.016043))
+    200
+
+    References
+    ----------
+    W.R. Hawthorne, D.S. Weddell, H.C. Hottel, 3rd Symp. Combust. (1949) 266-288; flames.md
+    section 2.
+    """
+    check_positive("nozzle_diameter", nozzle_diameter, "m")
+    if not 0 < c_t <= 1:
+        raise InputError("c_t", c_t, "in (0, 1]")
+    ratio = (t_flame / (alpha_t * t_nozzle)) * (c_t + (1.0 - c_t) * m_surroundings / m_nozzle)
+    return float(nozzle_diameter * 5.3 / c_t * np.sqrt(ratio))
+
+
+@lru_cache(maxsize=64)
+def _fuel_data(fuel: tuple[tuple[str, float], ...]):
+    """Molar mass (kg/mol), O2 demand (mol/mol), LHV and HHV (J/kg) of a fuel at 298.15 K."""
+    import cantera as ct
+
+    gas = ct.Solution(MECHANISM)
+    x = dict(fuel)
+    gas.TPX = T_REF, 101325.0, x
+    mm = gas.mean_molecular_weight / 1000.0
+    o2 = 0.0
+    c = h = 0.0
+    for name, xi in x.items():
+        k = gas.species_index(name)
+        nc = gas.n_atoms(k, "C") if "C" in gas.element_names else 0.0
+        nh = gas.n_atoms(k, "H")
+        no = gas.n_atoms(k, "O")
+        o2 += xi * (nc + nh / 4.0 - no / 2.0)
+        c += xi * nc
+        h += xi * nh
+    h_fuel = gas.enthalpy_mole  # J/kmol
+    prod = ct.Solution(MECHANISM)
+    n_o2 = gas.n_atoms(gas.species_index("O2"), "O") / 2.0  # 1
+    comp = {"CO2": c, "H2O": h / 2.0}
+    for name, xi in x.items():
+        if name in ("N2", "AR", "Ar", "HE"):
+            comp[name] = comp.get(name, 0.0) + xi
+        if name == "CO2":
+            pass  # already counted in c
+    total = sum(comp.values())
+    prod.TPX = T_REF, 101325.0, {k: v / total for k, v in comp.items() if v > 0}
+    h_prod = prod.enthalpy_mole * total
+    o2gas = ct.Solution(MECHANISM)
+    o2gas.TPX = T_REF, 101325.0, "O2:1"
+    h_react = h_fuel + o2 * o2gas.enthalpy_mole * n_o2
+    lhv = (h_react - h_prod) / 1000.0 / mm  # J/kg of fuel
+    hhv = lhv + (h / 2.0) * H2O_VAPORISATION / mm
+    return mm, o2, lhv, hhv
+
+
+def heating_values(fuel) -> tuple[float, float]:
+    """Lower and higher heating values of a gaseous fuel at 298.15 K, J/kg.
+
+    Complete combustion to CO2 and H2O (vapour for the LHV, liquid for the HHV, with the
+    enthalpy of vaporisation of water at 298.15 K, 44.0 kJ/mol); Cantera GRI-Mech 3.0
+    thermochemistry.
+
+    Parameters
+    ----------
+    fuel : str or mapping
+        Composition by mole, e.g. ``"CH4:1"``.
+
+    Returns
+    -------
+    (float, float), J/kg
+
+    Examples
+    --------
+    >>> lhv, hhv = heating_values("CH4:1")
+    >>> round(lhv / 1e6, 2), round(hhv / 1e6, 2)
+    (50.03, 55.51)
+
+    References
+    ----------
+    Cantera GRI-Mech 3.0 thermo; flames.md section 1 (CH4 LHV 50.03 MJ/kg).
+    """
+    _, _, lhv, hhv = _fuel_data(parse_composition(fuel))
+    return lhv, hhv
+
+
+def _mix_air_temperature(streams) -> float:
+    """Temperature of air streams mixed at constant enthalpy (Cantera), K."""
+    import cantera as ct
+
+    flows = [s for s in streams if s.flow > 0]
+    if len({s.temperature for s in flows}) <= 1:
+        return flows[0].temperature if flows else T_REF
+    total = None
+    for s in flows:
+        g = ct.Solution(MECHANISM)
+        g.TPX = s.temperature, 101325.0, AIR
+        q = ct.Quantity(g, mass=s.flow)
+        total = q if total is None else total + q
+    return float(total.T)
+
+
+def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None) -> Flame:
+    """Products, heating values, jet numbers and flame length of ``burner`` in a kiln.
+
+    Parameters
+    ----------
+    burner : Burner
+    kiln_diameter : float, m
+        Inner diameter of the kiln.
+    kiln_length : float, m, optional
+        A flame override longer than the kiln is refused.
+
+    Returns
+    -------
+    Flame
+
+    Examples
+    --------
+    Barr's UBC pilot kiln, trial T4 (flows in normal litres per second, 0 degC):
+
+    >>> n = 1e-3 / 0.022414  # mol per normal litre
+    >>> b = Burner("CH4:1", 1.97 * n * 0.016043, AirStream(17.4 * n * AIR_MOLAR_MASS),
+    ...            AirStream(43.0 * n * AIR_MOLAR_MASS), nozzle_diameter=0.04)
+    >>> f = fire(b, 0.411)
+    >>> round(f.fuel_lhv / 1e3, 1), round(f.products.adiabatic_temperature, -1)
+    (70.5, 1090.0)
+    >>> round(f.flame_length, 2), f.recirculating
+    (0.63, True)
+
+    References
+    ----------
+    See the module docstring.
+    """
+    check_positive("kiln.diameter", kiln_diameter, "m")
+    fuel = parse_composition(burner.fuel)
+    mm_fuel, o2_demand, lhv, hhv = _fuel_data(fuel)
+    t_air = _mix_air_temperature((burner.primary_air, burner.secondary_air))
+    products = burn_fuel(fuel, burner.fuel_flow, burner.air_flow, burner.fuel_temperature, t_air)
+    n_fuel = burner.fuel_flow / mm_fuel
+    n_stoich_air = n_fuel * o2_demand / 0.21
+    if n_stoich_air > 0:
+        lam = burner.air_flow / AIR_MOLAR_MASS / n_stoich_air
+        lam_p = burner.primary_air.flow / AIR_MOLAR_MASS / n_stoich_air
+    else:
+        lam = lam_p = float("inf")
+    sensible = products.mass_flow * float(products.table.enthalpy(products.inlet_temperature))
+    jet = dict.fromkeys(
+        (
+            "equivalent_diameter",
+            "nozzle_velocity",
+            "thring_newby",
+            "entrainment_length",
+            "recirculation_length",
+            "recirculating",
+        )
+    )
+    flame_length = burner.flame_length
+    if burner.nozzle_diameter is not None:
+        jet, hwh = _jet_numbers(burner, fuel, mm_fuel, lam_p, kiln_diameter)
+        if flame_length is None:
+            flame_length = hwh
+    if burner.combustion == "burnout" and flame_length is None:
+        raise InputError(
+            "burner.flame_length",
+            None,
+            "given, or a burner.nozzle_diameter to compute it (the burnout model needs it)",
+        )
+    if (
+        burner.flame_length is not None
+        and kiln_length is not None
+        and burner.flame_length > kiln_length
+    ):
+        raise InputError(
+            "burner.flame_length",
+            f"{burner.flame_length:.6g} m",
+            f"<= the kiln length ({kiln_length:.6g} m)",
+        )
+    return Flame(
+        burner=burner,
+        products=products,
+        fuel_lhv=burner.fuel_flow * lhv,
+        fuel_hhv=burner.fuel_flow * hhv,
+        sensible_input=sensible,
+        excess_air=lam - 1.0,
+        primary_excess_air=lam_p - 1.0,
+        flame_length=None if flame_length is None else float(flame_length),
+        combustion=burner.combustion,
+        **jet,
+    )
+
+
+def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
+    """Thring-Newby / Ricou-Spalding jet numbers and the HWH flame length (see the module)."""
+    m0 = burner.fuel_flow + burner.primary_air.flow
+    n0 = burner.fuel_flow / mm_fuel + burner.primary_air.flow / AIR_MOLAR_MASS
+    mm0 = m0 / n0
+    # nozzle-fluid temperature: fuel and primary air mixed at constant heat capacity per mole
+    nf = burner.fuel_flow / mm_fuel
+    na = burner.primary_air.flow / AIR_MOLAR_MASS
+    t0 = (nf * burner.fuel_temperature + na * burner.primary_air.temperature) / (nf + na)
+    rho0 = 101325.0 * mm0 / (R_UNIVERSAL * t0)
+    d0 = burner.nozzle_diameter
+    u0 = m0 / (rho0 * np.pi * d0**2 / 4.0)
+    t_s = burner.secondary_air.temperature if burner.secondary_air.flow > 0 else t0
+    rho_a = 101325.0 * AIR_MOLAR_MASS / (R_UNIVERSAL * t_s)
+    de = 2.0 * m0 / np.sqrt(np.pi * rho_a * m0 * u0)
+    ma = burner.secondary_air.flow
+    theta = (1.0 + ma / m0) * de / kiln_diameter
+    x_s = de * (m0 + ma) / (burner.entrainment * m0)
+    x_w = max(kiln_diameter / 2.0 - de / 2.0, 0.0) / JET_SPREAD
+    # flame length of the nozzle fluid (fuel + primary air) burning with the surroundings
+    if lam_p >= 1.0:
+        c_t = 1.0
+        t_f = _adiabatic(fuel, burner.fuel_flow, burner.primary_air.flow, burner, t0)
+    else:
+        n_add = (1.0 - lam_p) * (burner.fuel_flow / mm_fuel) * _fuel_data(fuel)[1] / 0.21
+        c_t = n0 / (n0 + n_add)
+        m_add = n_add * AIR_MOLAR_MASS
+        t_f = _adiabatic(fuel, burner.fuel_flow, burner.primary_air.flow + m_add, burner, t0)
+    hwh = hawthorne_flame_length(d0, c_t, t_f, t0, AIR_MOLAR_MASS, mm0)
+    jet = dict(
+        equivalent_diameter=float(de),
+        nozzle_velocity=float(u0),
+        thring_newby=float(theta),
+        entrainment_length=float(x_s),
+        recirculation_length=float(x_w),
+        recirculating=bool(theta < 0.75),
+    )
+    return jet, hwh
+
+
+def _adiabatic(fuel, fuel_flow, air_flow, burner, t_air) -> float:
+    """Adiabatic temperature of ``fuel`` burnt with ``air_flow`` (frozen products), K."""
+    return burn_fuel(
+        fuel, fuel_flow, air_flow, burner.fuel_temperature, t_air
+    ).adiabatic_temperature
