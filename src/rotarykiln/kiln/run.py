@@ -85,6 +85,12 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
     length = case.kiln.length
     kw = {}
     if h.burner is not None:
+        if h.burner.flame_length is not None and h.burner.flame_length > length:
+            raise InputError(
+                "heat.burner.flame_length",
+                f"{h.burner.flame_length:.6g} m",
+                f"<= the kiln length ({length:.6g} m)",
+            )
         flame = fire(burner_from_case(h.burner), case.kiln.diameter, length)
         kw.update(
             gas=flame.products.table,
