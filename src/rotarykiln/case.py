@@ -521,11 +521,14 @@ class Chemistry(Section):
     Wall: ``wall: wall_u`` (one wall temperature, loss U pi D (T_w - T_a), ``wall_loss``) or
     ``wall: lining`` (the heat model's wall: ``lining`` layers with k(T), shell loss to
     ``ambient_temperature`` with ``wind_speed``, ``shell_emissivity``); default ``lining`` when
-    a lining is given, else ``wall_u``."""
+    a lining is given, else ``wall_u``. ``burner``: a burner at the gas inlet instead of
+    ``gas.inlet_temperature``/``inlet_flow``/``composition`` (instant burn-out: the products of
+    complete combustion enter at their adiabatic temperature)."""
 
     reactions: Annotated[list, BeforeValidator(_reaction_names)]
     feed: ChemistryFeed
     gas: ChemistryGas = ChemistryGas()
+    burner: Burner | None = None
     solid: ChemistrySolid = ChemistrySolid()
     residence_time: Time | None = None
     wall: Literal["wall_u", "lining"] | None = None

@@ -75,14 +75,26 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
     if feed is None or feed <= 0:
         raise InputError("operation.feed", feed, "> 0 kg/s for the reacting kiln")
     g = ch.gas
-    if g.inlet_flow is None or g.inlet_flow <= 0 or g.inlet_temperature is None:
+    flame = None
+    if ch.burner is not None:
+        if g.inlet_flow is not None or g.inlet_temperature is not None or g.composition:
+            raise InputError(
+                "chemistry.gas.inlet_flow",
+                g.inlet_flow,
+                "absent with a chemistry.burner (the burner makes the inlet gas)",
+            )
+        flame, gas_in, t_gas_in = _burner_gas(ch.burner, case.kiln)
+    elif g.inlet_flow is None or g.inlet_flow <= 0 or g.inlet_temperature is None:
         raise InputError(
             "chemistry.gas.inlet_flow",
             g.inlet_flow,
             "> 0 kg/s, with chemistry.gas.inlet_temperature",
         )
-    if g.composition is None:
-        raise InputError("chemistry.gas.composition", None, "given (gas mass fractions)")
+    if flame is None:
+        if g.composition is None:
+            raise InputError("chemistry.gas.composition", None, "given (gas mass fractions)")
+        gas_in = {n: w * g.inlet_flow for n, w in g.composition.items()}
+        t_gas_in = g.inlet_temperature
     lib = _library_solid(case.material.name)
     m = case.material
     rho = m.bulk_density or (lib.bulk_density if lib else None)
@@ -129,8 +141,8 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
         bed_conductivity=kb,
         bed_emissivity=eps_b,
         particle_diameter=dp,
-        gas_in={n: w * g.inlet_flow for n, w in g.composition.items()},
-        gas_inlet_temperature=g.inlet_temperature,
+        gas_in=gas_in,
+        gas_inlet_temperature=t_gas_in,
         mechanism=mechanism_from_case(ch),
         wall_emissivity=ch.wall_emissivity,
         pressure=g.pressure,
@@ -141,6 +153,36 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
         **wall,
     )
     return kiln, int(ch.cells)
+
+
+def _burner_gas(section, kiln_section):
+    """Flame, inlet gas species flows (kg/s) and temperature (K) of a ``chemistry.burner``.
+
+    Instant burn-out: the products of complete combustion at their adiabatic temperature.
+    Product species the reacting kiln does not carry (traces of NO, OH, Ar ...) are counted
+    as N2, by mass (their sum is reported by the flame's products; below 0.1 % for
+    natural gas with air).
+    """
+    from rotarykiln.kiln.flame import fire
+    from rotarykiln.kiln.run import burner_from_case
+    from rotarykiln.materials.gas import molar_mass
+
+    if section.combustion != "instant":
+        raise InputError(
+            "chemistry.burner.combustion",
+            section.combustion,
+            "instant (the reacting kiln takes the burner's products at the burner)",
+        )
+    flame = fire(burner_from_case(section), kiln_section.diameter, kiln_section.length)
+    p = flame.products
+    known = set(default_species().gas_names)
+    mass = {name: x * molar_mass(f"{name}:1") for name, x in p.composition}
+    total = sum(mass.values())
+    flows: dict[str, float] = {}
+    for name, m in mass.items():
+        key = name if name in known else "N2"
+        flows[key] = flows.get(key, 0.0) + p.mass_flow * m / total
+    return flame, flows, p.adiabatic_temperature
 
 
 def _wall_from_case(ch) -> dict:
