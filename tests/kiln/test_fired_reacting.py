@@ -6,8 +6,8 @@ import pytest
 import yaml
 
 from rotarykiln.case import load_case, parse_case
-from rotarykiln.chemistry.species import default_species
 from rotarykiln.cases import builtin_case_path
+from rotarykiln.chemistry.species import default_species
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.reacting import reacting_kiln_from_case, run_reacting_case
 
