@@ -529,6 +529,7 @@ class Chemistry(Section):
     feed: ChemistryFeed
     gas: ChemistryGas = ChemistryGas()
     burner: Burner | None = None
+    counter_current: bool = True
     solid: ChemistrySolid = ChemistrySolid()
     residence_time: Time | None = None
     wall: Literal["wall_u", "lining"] | None = None

@@ -150,6 +150,7 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
         steam_flow=g.steam_flow,
         closures=closures,
         name=case.name,
+        counter_current=ch.counter_current,
         **wall,
     )
     return kiln, int(ch.cells)

@@ -27,7 +27,7 @@ SEED004_CLOSURES = Closures(
 
 @dataclass(frozen=True)
 class ReactingKiln:
-    """Everything the reacting kiln model needs (SI units; counter-current gas).
+    """Everything the reacting kiln model needs (SI units).
 
     Geometry and motion: ``length`` (m), ``radius`` (m, inner), ``omega`` (rad/s), ``fill``
     (-, constant), ``bed_velocity`` (m/s, axial solids speed; hold-up per length of species i
@@ -49,7 +49,8 @@ class ReactingKiln:
     layer, or 0.9 without layers).
     Chemistry: ``mechanism`` (:class:`~rotarykiln.chemistry.Mechanism`), ``steam_flow`` (kg/s,
     seed 004's constant Q_a for the Ortiz law; None: the local gas H2O flow).
-    ``closures`` (:class:`~rotarykiln.kiln.model.Closures`), ``name``.
+    ``closures`` (:class:`~rotarykiln.kiln.model.Closures`), ``name``; ``counter_current``
+    (gas enters at z = length, against the solids; False: with them, at z = 0).
     """
 
     length: float
@@ -78,6 +79,7 @@ class ReactingKiln:
     steam_flow: float | None = None
     closures: Closures = field(default_factory=lambda: SEED004_CLOSURES)
     name: str = "reacting kiln"
+    counter_current: bool = True
 
     def __post_init__(self):
         check_positive("kiln.length", self.length, "m")

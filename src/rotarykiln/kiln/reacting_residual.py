@@ -1,9 +1,9 @@
 r"""Residual of the reacting kiln: energy and species balances of every cell, one Newton system.
 
 Unknowns of cell ``j`` (last axis): 0 ``T_bed`` at face j+1 (solids outlet of the cell), 1
-``T_gas`` at face j (gas outlet, counter-current), 2 the inner wall (with a lining: then each
+``T_gas`` at the cell's gas outlet (face j counter-current, face j+1 co-current), 2 the inner wall (with a lining: then each
 lining interface and the shell, :mod:`rotarykiln.kiln.wall`), then the mass flows of the
-reacting bed species at face j+1 and of the reacting gas species at face j, each divided by the
+reacting bed species at face j+1 and of the reacting gas species at the gas outlet face, each divided by the
 phase's total inlet flow (for bed reactants that are fed and never produced, the square root
 of that ratio). Species that no reaction touches keep their inlet flow.
 
@@ -116,6 +116,9 @@ class ReactingResidual:
             k.bed_conductivity,
         )
         self.exchange = CrossSectionExchange.of(k, g, bed, k.gas_emissivity_law)
+        # faces where each cell's gas leaves: j (counter-current) or j+1 (co-current)
+        self.gas_out = slice(None, -1) if k.counter_current else slice(1, None)
+        self.gas_in_face = -1 if k.counter_current else 0
         self.reaction_scale = 1.0  # continuation parameter on the reaction rates
         self.radiation_scale = 1.0  # continuation parameter on radiation
         self.q_ref = 1.0
@@ -126,13 +129,15 @@ class ReactingResidual:
         k = self.kiln
         batch = x.shape[:-2]
         tb = np.concatenate([np.broadcast_to(k.feed_temperature, batch + (1,)), x[..., 0]], -1)
-        tg = np.concatenate([x[..., 1], np.broadcast_to(k.gas_inlet_temperature, batch + (1,))], -1)
+        t_in = np.broadcast_to(k.gas_inlet_temperature, batch + (1,))
+        parts = [x[..., 1], t_in] if k.counter_current else [t_in, x[..., 1]]
+        tg = np.concatenate(parts, -1)
         qb = np.broadcast_to(self.bed_in, batch + (self.n + 1, len(self.bed_names))).copy()
         i0 = self.i_species
         xb = x[..., i0 : i0 + self.nb]
         qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
         qg = np.broadcast_to(self.gas_inlet, batch + (self.n + 1, len(self.gas_names))).copy()
-        qg[..., :-1, self.gas_pos] = x[..., i0 + self.nb :] * self.gas_scale
+        qg[..., self.gas_out, self.gas_pos] = x[..., i0 + self.nb :] * self.gas_scale
         return tb, tg, qb, qg
 
     # --- closures -------------------------------------------------------------------------------
@@ -200,7 +205,9 @@ class ReactingResidual:
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
-        prod, heat, rate = self.rates(tb, tg, qb[..., 1:, :], qg[..., :-1, :], q_bed_in, co["h_gb"])
+        prod, heat, rate = self.rates(
+            tb, tg, qb[..., 1:, :], qg[..., self.gas_out, :], q_bed_in, co["h_gb"]
+        )
         w_bed = prod[..., self.bed_idx]
         w_gas = prod[..., self.gas_idx]
         hb_cell = self.cp_bed * (tb[..., None] - T_REF)
@@ -211,7 +218,8 @@ class ReactingResidual:
         Hb = (qb * hb_nodes).sum(-1)
         Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
-        r_gas = Hg[..., :-1] - Hg[..., 1:] + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
+        sign = 1.0 if self.kiln.counter_current else -1.0  # downstream minus upstream
+        r_gas = sign * (Hg[..., :-1] - Hg[..., 1:]) + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
         parts = [r_bed[..., None], r_gas[..., None]] + [(dz * r)[..., None] for r in wall_rows]
         if self.nb:
             qv = qb[..., self.bed_pos]
@@ -219,7 +227,8 @@ class ReactingResidual:
             parts.append(rb * self.q_ref)
         if self.ng:
             gv = qg[..., self.gas_pos]
-            rg = (gv[..., :-1, :] - gv[..., 1:, :] - dz * w_gas[..., self.gas_pos]) / self.gas_scale
+            dg = sign * (gv[..., :-1, :] - gv[..., 1:, :])
+            rg = (dg - dz * w_gas[..., self.gas_pos]) / self.gas_scale
             parts.append(rg * self.q_ref)
         R = np.concatenate(parts, axis=-1)
         if not full:

@@ -54,6 +54,7 @@ class ReactingSolution:
     fill: float
     feed: dict = field(repr=False, default_factory=dict)
     t_lining: np.ndarray | None = field(repr=False, default=None)
+    counter_current: bool = True
 
     @property
     def t_shell(self) -> np.ndarray | None:
@@ -112,7 +113,8 @@ class ReactingSolution:
 
     @property
     def gas_outlet_temperature(self) -> float:
-        return float(self.t_gas_nodes[0])
+        """Gas temperature where the gas leaves (z = 0 counter-current, z = L co-current), K."""
+        return float(self.t_gas_nodes[0 if self.counter_current else -1])
 
     @property
     def bed_outlet_temperature(self) -> float:
@@ -129,7 +131,9 @@ class ReactingSolution:
             "gas_min_temperature_K": float(self.t_gas_nodes.min()),
             "burn_off_percent": self.burn_off,
             "production_percent": self.production,
-            "gas_outlet_flow_kg_s": float(sum(v[0] for v in self.gas_flows.values())),
+            "gas_outlet_flow_kg_s": float(
+                sum(v[0 if self.counter_current else -1] for v in self.gas_flows.values())
+            ),
             "solids_outlet_flow_kg_s": float(sum(v[-1] for v in self.bed_flows.values())),
             "reaction_heat_W": self.reaction_heat,
             "shell_loss_W": self.shell_loss,

@@ -23,7 +23,7 @@ SPECIES_STEP_FLOOR = 1e-6
 def _initial_guess(res: ReactingResidual) -> np.ndarray:
     k = res.kiln
     t_b, t_g, t_wall = steady.initial_temperatures(
-        res.z_nodes, k.feed_temperature, k.gas_inlet_temperature, res.wall
+        res.z_nodes, k.feed_temperature, k.gas_inlet_temperature, res.wall, k.counter_current
     )
     i0 = res.i_species
     x = np.empty((res.n, res.nv))
@@ -108,8 +108,9 @@ def solve_reacting(
     dz = res.dz
     hb = res.cp_bed * (tb_n[:, None] - T_REF)
     hg = res.mixture.species_enthalpy(tg_n)
-    e_in = float(qb[0] @ hb[0] + qg[-1] @ hg[-1])
-    e_out = float(qb[-1] @ hb[-1] + qg[0] @ hg[0])
+    gi, go = (-1, 0) if kiln.counter_current else (0, -1)  # gas inlet and outlet faces
+    e_in = float(qb[0] @ hb[0] + qg[gi] @ hg[gi])
+    e_out = float(qb[-1] @ hb[-1] + qg[go] @ hg[go])
     loss = float(np.sum(fl["q_shell_loss"]) * dz)
     w_all = prod
     h_all = np.zeros_like(prod)
@@ -120,9 +121,9 @@ def solve_reacting(
     denom = max(abs(heat_to_solids), abs(reaction_heat), 1.0)
     closure = (e_in - e_out - loss - reaction_heat) / denom
     inlets = {s: float(qb[0, i]) for i, s in enumerate(res.bed_names)}
-    inlets.update({s: float(qg[-1, i]) for i, s in enumerate(res.gas_names)})
+    inlets.update({s: float(qg[gi, i]) for i, s in enumerate(res.gas_names)})
     outlets = {s: float(max(qb[-1, i], 0.0)) for i, s in enumerate(res.bed_names)}
-    outlets.update({s: float(max(qg[0, i], 0.0)) for i, s in enumerate(res.gas_names)})
+    outlets.update({s: float(max(qg[go, i], 0.0)) for i, s in enumerate(res.gas_names)})
     if check_balances:
         elements = check_stream_balance(inlets, outlets, res.species, rtol=ELEMENT_RTOL)
         if not abs(closure) <= ENERGY_RTOL:
@@ -154,6 +155,7 @@ def solve_reacting(
         residence_time=kiln.residence_time,
         fill=kiln.fill,
         feed=dict(kiln.feed),
+        counter_current=kiln.counter_current,
     )
 
 
