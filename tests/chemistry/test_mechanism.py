@@ -33,7 +33,12 @@ def _state(n=5, T=None):
         bed_mass_per_length=20.0,
         partial_pressure={"CO2": 2e4, "H2O": 3e4},
         bed_mass_flow_in={"CaCO3": 6e-3, "kerogen": 1.5e-3},
-        inputs={"steam_mass_flow": 5e-3, "drying_conductance": 30.0, "bed_heat_input": 1e4},
+        inputs={
+            "steam_mass_flow": 5e-3,
+            "drying_conductance": 30.0,
+            "bed_heat_input": 1e4,
+            "freeboard_area": 0.1,
+        },
     )
 
 
@@ -136,7 +141,12 @@ def test_property_balance_closes_and_rates_nonnegative(T, dT, fr, pco2):
         10.0,
         partial_pressure={"CO2": pco2},
         bed_mass_flow_in={"CaCO3": 1e-3, "kerogen": 1e-3},
-        inputs={"steam_mass_flow": 5e-3, "drying_conductance": 30.0},
+        inputs={
+            "steam_mass_flow": 5e-3,
+            "drying_conductance": 30.0,
+            "bed_heat_input": 1e4,
+            "freeboard_area": 0.1,
+        },
     )
     out = mech.rates(s)
     assert np.all(out.reaction_rate >= 0) and np.all(np.isfinite(out.production))

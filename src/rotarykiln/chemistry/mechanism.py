@@ -161,8 +161,13 @@ class CellRates:
     reaction_heat : ndarray
         (n, n_reactions): heat absorbed by each reaction, W/m (> 0 endothermic).
     heat_absorbed : ndarray
-        (n,): total heat absorbed by the reactions, W/m.
+        (n,): total heat absorbed by the bed reactions, W/m.
     gas_species : tuple of str
+    heat_absorbed_gas : ndarray or float
+        (n,): heat absorbed by the gas-phase (freeboard) reactions, W/m (0 without any;
+        their heat is the standard heat at 298.15 K, see :mod:`.gas_phase`).
+    production_gas_phase : ndarray or float
+        (n, n_species): the part of ``production`` made by the gas-phase reactions, kg/(s m).
     """
 
     species: tuple[str, ...]
@@ -172,6 +177,8 @@ class CellRates:
     reaction_heat: np.ndarray
     heat_absorbed: np.ndarray
     gas_species: tuple[str, ...] = ()
+    heat_absorbed_gas: np.ndarray | float = 0.0
+    production_gas_phase: np.ndarray | float = 0.0
 
     def of(self, name: str) -> np.ndarray:
         """Production rate of one species, kg/(s m)."""
@@ -255,6 +262,8 @@ class Mechanism:
         object.__setattr__(self, "_dh", np.array([r.heat for r in self.reactions]))
         object.__setattr__(self, "_dcp", np.array([r.delta_cp for r in self.reactions]))
         object.__setattr__(self, "_tref", np.array([r.T_ref for r in self.reactions]))
+        gas = np.array([r.phase == "gas" for r in self.reactions], dtype=bool)
+        object.__setattr__(self, "_gas", gas)
 
     # --- construction ------------------------------------------------------------------
     @classmethod
@@ -332,19 +341,27 @@ class Mechanism:
                 )
             R[:, j] = np.maximum(v, 0.0)
         if self.kirchhoff:
-            dh = self._dh[None, :] + self._dcp[None, :] * (ctx.T_bed[:, None] - self._tref[None, :])
+            # Kirchhoff shift of the bed reactions only: a gas-phase heat is the 298.15 K value
+            dcp = np.where(self._gas, 0.0, self._dcp)
+            dh = self._dh[None, :] + dcp[None, :] * (ctx.T_bed[:, None] - self._tref[None, :])
         else:
             dh = np.broadcast_to(self._dh, R.shape)
         heat = R * dh
         prod = R @ self._S
+        gas_heat, gas_prod = 0.0, 0.0
+        if self._gas.any():
+            gas_heat = heat[:, self._gas].sum(axis=1)
+            gas_prod = R[:, self._gas] @ self._S[self._gas]
         out = CellRates(
             species=self.species.names,
             reactions=self.names,
             reaction_rate=R,
             production=prod,
             reaction_heat=heat,
-            heat_absorbed=heat.sum(axis=1),
+            heat_absorbed=heat[:, ~self._gas].sum(axis=1),
             gas_species=self.species.gas_names,
+            heat_absorbed_gas=gas_heat,
+            production_gas_phase=gas_prod,
         )
         if check:
             check_element_balance(out.production, self.species)

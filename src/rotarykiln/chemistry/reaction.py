@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from rotarykiln.chemistry import gas_phase as _gas_phase  # noqa: F401  (registers its laws)
 from rotarykiln.chemistry.ratelaws import RATE_LAWS, RateLaw
 from rotarykiln.chemistry.species import SpeciesTable, default_species
 from rotarykiln.errors import InputError
@@ -75,6 +76,10 @@ class Reaction:
         Heat of reaction at ``T_ref``, J per kg of basis consumed (> 0 endothermic).
     T_ref : float
         Reference temperature of ``heat``, K.
+    phase : str
+        ``bed`` (default: rates per bed hold-up, heat taken from the bed) or ``gas`` (a
+        freeboard reaction of gas species: rate per freeboard volume at the gas temperature,
+        heat released into the gas; ``heat`` then at 298.15 K).
     source : str
     equation : str
     mass_stoichiometry : ndarray
@@ -91,6 +96,7 @@ class Reaction:
     species: SpeciesTable = field(repr=False)
     source: str = ""
     equation: str = ""
+    phase: str = "bed"
     mass_stoichiometry: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -211,7 +217,7 @@ def reaction_from_dict(
     if not isinstance(name, str) or not name:
         raise InputError(f"{where}.name", name, "a non-empty string")
     f = f"{where}.{name}"
-    allowed = {"name", "stoichiometry", "basis", "rate", "heat", "source", "equation"}
+    allowed = {"name", "stoichiometry", "basis", "rate", "heat", "source", "equation", "phase"}
     extra = set(data) - allowed
     if extra:
         raise InputError(f"{f}.{sorted(extra)[0]}", "given", f"one of {', '.join(sorted(allowed))}")
@@ -241,8 +247,15 @@ def reaction_from_dict(
         raise InputError(
             f"{f}.basis", basis, "a reactant of the stoichiometry (negative coefficient)"
         )
-    if sp[basis].phase != "bed":
+    phase = data.get("phase", "bed")
+    if phase not in ("bed", "gas"):
+        raise InputError(f"{f}.phase", phase, "bed or gas")
+    if phase == "bed" and sp[basis].phase != "bed":
         raise InputError(f"{f}.basis", basis, "a bed species (rates are per bed hold-up)")
+    if phase == "gas":
+        solids = [n for n in stoich if sp[n].phase != "gas"]
+        if solids:
+            raise InputError(f"{f}.stoichiometry.{solids[0]}", solids[0], "a gas species")
     # element balance
     bad = []
     for e in sp.elements:
@@ -276,6 +289,8 @@ def reaction_from_dict(
                 f"{f}.rate.pressure_orders.{gas}", gas, f"a gas species ({', '.join(sp.gas_names)})"
             )
     heat, T_ref = _heat_from(f"{f}.heat", data["heat"], sp[basis].molar_mass)
+    if phase == "gas" and abs(T_ref - 298.15) > 1e-9:
+        raise InputError(f"{f}.heat.T_ref", T_ref, "298.15 K for a gas-phase reaction")
     return Reaction(
         name=name,
         stoichiometry=stoich,
@@ -287,6 +302,7 @@ def reaction_from_dict(
         species=sp,
         source=str(data.get("source", "")),
         equation=str(data.get("equation", "")),
+        phase=phase,
     )
 
 

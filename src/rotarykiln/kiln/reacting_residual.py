@@ -23,7 +23,10 @@ flows (implicit upwind: flows never turn negative):
 
     0 = Q_{gw} + Q_{rw} - Q_{cw} - U\pi D (T_w - T_a)
 
-(with a lining, the wall rows of the heat model instead: :mod:`rotarykiln.kiln.wall`). The
+(with a lining, the wall rows of the heat model instead: :mod:`rotarykiln.kiln.wall`).
+Freeboard (``phase: gas``) reactions (:mod:`rotarykiln.chemistry.gas_phase`) change the gas
+species at the gas temperature and release :math:`-\Delta H_{298}\,r` into the gas balance
+instead (the gas tables hold the sensible part), not into the bed. The
 exchange terms come from :class:`rotarykiln.kiln.exchange.CrossSectionExchange`, shared with
 the heat model.
 :math:`h_i` are sensible enthalpies (0 at 298.15 K): the gases the bed releases leave it at the
@@ -171,6 +174,7 @@ class ReactingResidual:
             "steam_mass_flow": steam,
             "drying_conductance": (h_gb * self.grid.chord).reshape(flat),
             "bed_heat_input": q_bed_in.reshape(flat),
+            "freeboard_area": np.broadcast_to(self.grid.freeboard_area, shape).reshape(flat),
         }
         st = ChemState(
             np.maximum(tb, T_FLOOR).reshape(flat),
@@ -186,7 +190,9 @@ class ReactingResidual:
         prod = lam * out.production.reshape(shape + (-1,))
         heat = lam * out.heat_absorbed.reshape(shape)
         rate = lam * out.reaction_rate.reshape(shape + (-1,))
-        return prod, heat, rate
+        heat_gas = lam * np.broadcast_to(out.heat_absorbed_gas, (flat,)).reshape(shape)
+        prod_gp = lam * np.broadcast_to(out.production_gas_phase, (flat, prod.shape[-1]))
+        return prod, heat, rate, heat_gas, prod_gp.reshape(prod.shape)
 
     # --- residual -------------------------------------------------------------------------------
     def evaluate(self, x, full: bool = False):
@@ -205,15 +211,18 @@ class ReactingResidual:
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
-        prod, heat, rate = self.rates(
+        prod, heat, rate, heat_gas, prod_gp = self.rates(
             tb, tg, qb[..., 1:, :], qg[..., self.gas_out, :], q_bed_in, co["h_gb"]
         )
         w_bed = prod[..., self.bed_idx]
         w_gas = prod[..., self.gas_idx]
+        # what the bed releases (bed reactions) enters the gas at the bed temperature; a
+        # freeboard reaction releases -dH_298 r into the gas, whose sensible tables do the rest
+        w_released = w_gas - prod_gp[..., self.gas_idx]
         hb_cell = self.cp_bed * (tb[..., None] - T_REF)
         hg_at_bed = self.mixture.species_enthalpy(tb)
         s_bed = -heat + (w_bed * hb_cell).sum(-1)
-        s_gas = (w_gas * hg_at_bed).sum(-1)
+        s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
         hb_nodes = self.cp_bed * (tbn[..., None] - T_REF)
         Hb = (qb * hb_nodes).sum(-1)
         Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
@@ -234,12 +243,13 @@ class ReactingResidual:
         if not full:
             return R
         chemistry = {
-            "q_reaction_absorbed": heat,
+            "q_reaction_absorbed": heat + heat_gas,
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
         }
         fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
-        return R, fluxes, prod, rate, (tb_n, tg_n, qb, qg)
+        # production by the bed reactions (the solver's global balance prices it at T_bed)
+        return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)
 
     def __call__(self, x):
         return self.evaluate(x)
