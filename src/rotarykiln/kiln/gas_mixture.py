@@ -13,16 +13,30 @@ composition, never by calling Cantera:
 Herning-Zipperer rule for the viscosity, both within ~10 % of Cantera's mixture-averaged values
 for flue gases). Species without a Cantera entry (the lumped ``volatiles``) carry their mean c_p
 from ``chemistry/species.yaml`` and are left out of the transport mixing.
+
+For speed the species fits (all on the breakpoints of
+:data:`~rotarykiln.materials.gas.T_GRID`) are stacked on a last axis: one interval search and
+one Horner evaluation give every species at once (the constant-c_p species are stacked as
+polynomials too, c_p constant and h linear).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from rotarykiln.chemistry.species import SpeciesTable, default_species
-from rotarykiln.materials.gas import R_UNIVERSAL, T_REF, gas_table
+from rotarykiln.materials.gas import (
+    R_UNIVERSAL,
+    T_GRID,
+    T_MAX,
+    T_MIN,
+    T_REF,
+    PiecewisePolynomials,
+    gas_table,
+)
 
 __all__ = ["GasMixture", "MixtureGas", "CANTERA_NAMES"]
 
@@ -72,23 +86,60 @@ class GasMixture:
     def _fallback_cp(self, i: int) -> float:
         return default_species()[self.names[i]].cp
 
+    @cached_property
+    def _fits(self):
+        """Stacked fits: (cp, h, conductivity and viscosity side by side), the cp at T_MIN and
+        T_MAX (slopes of the enthalpy's linear extensions) and the transport weights."""
+        n = len(self.names)
+        m = len(T_GRID) - 1
+        cp = np.zeros((4, m, n))
+        h = np.zeros((5, m, n))
+        tr = np.zeros((4, m, 2 * n))
+        for i, tab in enumerate(self._tables):
+            if tab is None:
+                c = self._fallback_cp(i)
+                cp[3, :, i] = c
+                h[3, :, i] = c
+                h[4, :, i] = c * (T_GRID[:-1] - T_REF)
+                continue
+            for f in (tab._cp, tab._h, tab._k, tab._mu):
+                if not np.array_equal(f.x, T_GRID):
+                    raise ValueError(f"gas table of {self.names[i]} not on the T_GRID breakpoints")
+            cp[:, :, i] = tab._cp.c
+            h[:, :, i] = tab._h.c
+            tr[:, :, i] = tab._k.c
+            tr[:, :, n + i] = tab._mu.c
+        cp_fit = PiecewisePolynomials(T_GRID, cp)
+        ends = cp_fit.evaluate(*cp_fit.interval(np.array([T_MIN, T_MAX])))
+        has_table = np.array([tab is not None for tab in self._tables], dtype=float)
+        return (
+            cp_fit,
+            PiecewisePolynomials(T_GRID, h),
+            PiecewisePolynomials(T_GRID, tr),
+            ends[0],
+            ends[1],
+            has_table,
+        )
+
+    def _interval(self, T):
+        return self._fits[0].interval(np.minimum(np.maximum(T, T_MIN), T_MAX))
+
     def species_enthalpy(self, T) -> np.ndarray:
         """Sensible enthalpy of each species (J/kg, 0 at 298.15 K), shape ``T.shape + (n,)``."""
         T = np.asarray(T, dtype=float)
-        out = np.empty(T.shape + (len(self.names),))
-        for i, tab in enumerate(self._tables):
-            if tab is None:
-                out[..., i] = self._fallback_cp(i) * (T - T_REF)
-            else:
-                out[..., i] = tab.enthalpy(T)
+        _, h, _, cp_lo, cp_hi, _ = self._fits
+        out = h.evaluate(*self._interval(T))
+        # linear extension outside the tables, as GasPropertyTable.enthalpy
+        below = np.minimum(T - T_MIN, 0.0)[..., None]
+        above = np.maximum(T - T_MAX, 0.0)[..., None]
+        out += cp_lo * below
+        out += cp_hi * above
         return out
 
     def species_cp(self, T) -> np.ndarray:
         """Specific heat of each species, J/(kg K), shape ``T.shape + (n,)``."""
         T = np.asarray(T, dtype=float)
-        out = np.empty(T.shape + (len(self.names),))
-        for i, tab in enumerate(self._tables):
-            out[..., i] = self._fallback_cp(i) if tab is None else tab.cp(T)
+        out = self._fits[0].evaluate(*self._interval(T))
         return out
 
     def mole_fractions(self, mass) -> np.ndarray:
@@ -103,24 +154,25 @@ class GasMixture:
 
         ``mass``: species mass flows or fractions, shape ``T.shape + (n,)``.
         """
+        return self.transport_x(T, self.mole_fractions(mass))
+
+    def transport_x(self, T, x, *, viscosity=True):
+        """:meth:`transport` from the mole fractions ``x`` (-, ``T.shape + (n,)``); with
+        ``viscosity=False`` only the conductivity (W/(m K)) is returned."""
         T = np.asarray(T, dtype=float)
-        x = self.mole_fractions(mass)
-        k = np.zeros(T.shape)
-        num = np.zeros(T.shape)
-        den = np.zeros(T.shape)
-        wsum = np.zeros(T.shape)
-        sq = np.sqrt(self.molar_mass)
-        for i, tab in enumerate(self._tables):
-            if tab is None:
-                continue
-            xi = x[..., i]
-            k = k + xi * tab.conductivity(T)
-            num = num + xi * tab.viscosity(T) * sq[i]
-            den = den + xi * sq[i]
-            wsum = wsum + xi
-        wsum = np.where(wsum > 0, wsum, 1.0)
-        den = np.where(den > 0, den, 1.0)
-        return k / wsum, num / den
+        n = len(self.names)
+        _, _, tr, _, _, has_table = self._fits
+        props = tr.evaluate(*self._interval(T))  # (..., 2n): conductivities, viscosities
+        xt = x * has_table
+        wsum = xt.sum(-1)
+        k = np.einsum("...i,...i->...", xt, props[..., :n])
+        k = k / np.where(wsum > 0, wsum, 1.0)
+        if not viscosity:
+            return k
+        xs = xt * np.sqrt(self.molar_mass)
+        den = xs.sum(-1)
+        num = np.einsum("...i,...i->...", xs, props[..., n:])
+        return k, num / np.where(den > 0, den, 1.0)
 
     def mean_molar_mass(self, mass) -> np.ndarray:
         """Mean molar mass, kg/mol, from mass flows or fractions on the last axis."""
@@ -156,21 +208,26 @@ class MixtureGas:
         total = np.maximum(flows.sum(-1), 1e-12)
         return cls(mixture, flows, pressure, total / freeboard_area, total)
 
+    @cached_property
+    def _x(self) -> np.ndarray:
+        """Mole fractions of the cells (computed once per state)."""
+        return self.mixture.mole_fractions(self.flows)
+
     def transport(self, T):
-        return self.mixture.transport(T, self.flows)
+        return self.mixture.transport_x(T, self._x)
 
     def conductivity(self, T):
-        return self.mixture.transport(T, self.flows)[0]
+        return self.mixture.transport_x(T, self._x, viscosity=False)
 
     def density(self, T):
         return self.pressure * self.mixture.mean_molar_mass(self.flows) / (R_UNIVERSAL * T)
 
     def cp(self, T):
-        return (self.mixture.species_cp(T) * self.flows).sum(-1) / self.total
+        return np.einsum("...i,...i->...", self.mixture.species_cp(T), self.flows) / self.total
 
     def partial_pressures(self):
         names = self.mixture.names
-        x = self.mixture.mole_fractions(self.flows)
+        x = self._x
         zero = 0.0 * x[..., 0]
         p_w = self.pressure * x[..., names.index("H2O")] if "H2O" in names else zero
         p_c = self.pressure * x[..., names.index("CO2")] if "CO2" in names else zero

@@ -35,29 +35,23 @@ def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
     n, nv = x.shape
     ncol = 3 * nv
     h = rel_step * np.maximum(np.abs(x), step_floor)
-    X = np.broadcast_to(x, (ncol, n, nv)).copy()
     cells = np.arange(n)
-    for c in range(3):
-        sel = cells[c::3]
-        for v in range(nv):
-            X[c * nv + v, sel, v] += h[sel, v]
-    dR = F(X) - R0  # (ncol, n, nv)
+    var = np.arange(nv)
+    colour = cells % 3
+    # colour (c, v) perturbs variable v of the cells j = c mod 3: X[c, v, j, v] = x[j, v] + h
+    X = np.broadcast_to(x, (3, nv, n, nv)).copy()
+    X[colour[:, None], var[None, :], cells[:, None], var[None, :]] = x + h
+    dR = (F(X.reshape(ncol, n, nv)) - R0).reshape(3, nv, n, nv)  # [c, v, row cell, equation]
     size = n * nv
     bw = 2 * nv - 1
     ab = np.zeros((2 * bw + 1, size))
-    e = np.arange(nv)
-    for c in range(3):
-        sel = cells[c::3]
-        for v in range(nv):
-            cols = sel * nv + v
-            for off in (-1, 0, 1):
-                rows_cell = sel + off
-                ok = (rows_cell >= 0) & (rows_cell < n)
-                rc = rows_cell[ok]
-                cc = cols[ok]
-                vals = dR[c * nv + v][rc, :] / h[sel[ok], v][:, None]  # (k, nv)
-                rows = rc[:, None] * nv + e[None, :]
-                ab[bw + rows - cc[:, None], np.broadcast_to(cc[:, None], rows.shape)] = vals
+    # d R[r, w] / d x[j, v] for the column cells j and row cells r = j + off
+    for off in (-1, 0, 1):
+        j = cells[max(0, -off) : n - max(0, off)]
+        vals = dR[colour[j], :, j + off, :] / h[j, :, None]  # [j, v, w]
+        rows = bw + off * nv + var[None, None, :] - var[None, :, None]
+        cols = (j[:, None] * nv + var[None, :])[:, :, None]
+        ab[rows, cols] = vals
     return ab, bw
 
 

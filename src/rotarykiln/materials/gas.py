@@ -10,6 +10,12 @@ holds to round-off and an energy balance written with :meth:`GasPropertyTable.en
 consistent with :meth:`GasPropertyTable.cp`. Conductivity and viscosity are cubic splines of
 the Cantera mixture-averaged transport values. The density follows the ideal-gas law.
 
+The fits are evaluated with numpy, not through scipy's ``PPoly.__call__`` (whose per-call
+overhead dominated the solvers): the breakpoints are the uniform 25 K grid of :data:`T_GRID`, so
+the interval is found by index arithmetic, and several polynomials stacked on a last axis (the
+species of a mixture) share one interval search and one Horner evaluation
+(:class:`PiecewisePolynomials`). The coefficients are scipy's, unchanged.
+
 Reference state: :math:`h = 0` at 298.15 K for the *fixed* composition of the table (sensible
 enthalpy; no reactions inside the table).
 """
@@ -19,7 +25,7 @@ from __future__ import annotations
 import difflib
 import math
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 from scipy.interpolate import CubicSpline
@@ -42,6 +48,78 @@ R_UNIVERSAL = 8.314462618  # J/(mol K)
 T_REF = 298.15  # K
 MECHANISM = "gri30.yaml"
 T_MIN, T_MAX = 200.0, 3200.0
+#: Temperatures (K) at which Cantera is sampled: the breakpoints of every fitted table.
+T_GRID = np.concatenate([np.linspace(T_MIN, 1000.0, 33), np.linspace(1025.0, T_MAX, 88)])
+
+
+def _clamp(T):
+    """``T`` (K) clamped to [T_MIN, T_MAX], NaN kept (np.clip's overhead avoided)."""
+    return np.minimum(np.maximum(T, T_MIN), T_MAX)
+
+
+class PiecewisePolynomials:
+    """Piecewise polynomials on shared breakpoints, evaluated with numpy (internal helper).
+
+    ``x``: breakpoints (K, increasing); ``c``: coefficients in scipy's ``PPoly`` layout,
+    shape ``(order + 1, len(x) - 1) + trailing`` (highest power first, local variable
+    ``T - x[i]``); the trailing axes stack several polynomials (e.g. one per species).
+    :meth:`interval` locates the pieces (the interval ``x[i] <= T < x[i+1]``, the last one
+    closed, as ``PPoly``); :meth:`evaluate` does Horner's rule on them. ``T`` must lie in
+    ``[x[0], x[-1]]`` (the tables clamp it).
+
+    Examples
+    --------
+    >>> from scipy.interpolate import CubicSpline
+    >>> f = CubicSpline([0.0, 1.0, 2.0, 4.0], [0.0, 1.0, 4.0, 16.0])
+    >>> p = PiecewisePolynomials(f.x, f.c)
+    >>> i, s = p.interval(np.array([0.5, 3.0, 4.0]))
+    >>> bool(np.allclose(p.evaluate(i, s), f([0.5, 3.0, 4.0]), rtol=1e-15))
+    True
+    """
+
+    def __init__(self, x, c):
+        x = np.asarray(x, dtype=float)
+        c = np.asarray(c, dtype=float)
+        self.x = x
+        self.order = c.shape[0] - 1
+        self._last = len(x) - 2
+        # one contiguous (pieces, ...) array per power: np.take gathers them fastest
+        self._coef = [np.ascontiguousarray(c[p]) for p in range(c.shape[0])]
+        step = (x[-1] - x[0]) / (len(x) - 1)
+        uniform = np.array_equal(x, x[0] + step * np.arange(len(x)))
+        self._step = step if uniform else None
+
+    def interval(self, T):
+        """Piece index ``i`` and local variable ``s = T - x[i]`` (K) of each ``T`` (K)."""
+        T = np.asarray(T, dtype=float)
+        if T.ndim == 0:
+            i, s = self.interval(T.reshape(1))
+            return i.reshape(()), s.reshape(())
+        if self._step is None:
+            i = np.searchsorted(self.x, T, side="right") - 1
+            np.clip(i, 0, self._last, out=i)
+        else:
+            # uniform grid: index arithmetic (NaN to piece 0, where it stays NaN), then the
+            # rare rounded-up index moved back so that x[i] <= T exactly, as a search gives
+            u = (T - self.x[0]) / self._step
+            np.fmax(u, 0.0, out=u)
+            np.minimum(u, self._last, out=u)
+            i = u.astype(np.intp)
+            i -= T < self.x[i]
+            np.maximum(i, 0, out=i)
+        return i, T - self.x[i]
+
+    def evaluate(self, i, s):
+        """Values at pieces ``i`` and local variables ``s`` (from :meth:`interval`), shape
+        ``s.shape + trailing``."""
+        coef = self._coef
+        trailing = coef[0].ndim - 1
+        s = s.reshape(s.shape + (1,) * trailing)
+        out = coef[0].take(i, axis=0)
+        for c in coef[1:]:
+            out *= s
+            out += c.take(i, axis=0)
+        return out
 
 
 def parse_composition(composition) -> tuple[tuple[str, float], ...]:
@@ -96,6 +174,22 @@ class GasPropertyTable:
     _k: CubicSpline = field(repr=False)
     _mu: CubicSpline = field(repr=False)
 
+    @cached_property
+    def _fits(self):
+        """cp, h, k, mu as :class:`PiecewisePolynomials` (numpy evaluation of the splines)."""
+        return tuple(PiecewisePolynomials(f.x, f.c) for f in (self._cp, self._h, self._k, self._mu))
+
+    @cached_property
+    def _cp_ends(self) -> tuple[float, float]:
+        """cp (J/(kg K)) at T_MIN and T_MAX: the slopes of the enthalpy's linear extensions."""
+        cp = self._fits[0]
+        lo, hi = cp.evaluate(*cp.interval(np.array([T_MIN, T_MAX])))
+        return float(lo), float(hi)
+
+    def _eval(self, which: int, T):
+        fit = self._fits[which]
+        return fit.evaluate(*fit.interval(_clamp(T)))
+
     def check_range(self, T) -> bool:
         """Warn once if any ``T`` (K) lies outside the fitted 200-3200 K (values clamped there).
 
@@ -120,22 +214,26 @@ class GasPropertyTable:
 
     def cp(self, T):
         """Specific heat at constant pressure, J/(kg K), at temperature ``T`` (K)."""
-        return self._cp(np.clip(T, T_MIN, T_MAX))
+        return self._eval(0, T)
 
     def enthalpy(self, T):
         """Sensible enthalpy relative to 298.15 K, J/kg (exact integral of :meth:`cp`)."""
         T = np.asarray(T, dtype=float)
-        Tc = np.clip(T, T_MIN, T_MAX)
         # linear extension outside the table keeps h monotone and consistent with cp
-        return self._h(Tc) + self._cp(Tc) * (T - Tc)
+        cp_lo, cp_hi = self._cp_ends
+        return (
+            self._eval(1, T)
+            + cp_lo * np.minimum(T - T_MIN, 0.0)
+            + cp_hi * np.maximum(T - T_MAX, 0.0)
+        )
 
     def conductivity(self, T):
         """Thermal conductivity, W/(m K)."""
-        return self._k(np.clip(T, T_MIN, T_MAX))
+        return self._eval(2, T)
 
     def viscosity(self, T):
         """Dynamic viscosity, Pa s."""
-        return self._mu(np.clip(T, T_MIN, T_MAX))
+        return self._eval(3, T)
 
     def density(self, T, pressure=101325.0):
         """Ideal-gas density, kg/m3, at ``T`` (K) and ``pressure`` (Pa)."""
@@ -155,7 +253,7 @@ def _cantera_table(composition: tuple[tuple[str, float], ...]) -> GasPropertyTab
     if unknown:
         raise InputError("gas.composition", ",".join(unknown), f"a species of {MECHANISM}")
     X = dict(composition)
-    temps = np.concatenate([np.linspace(T_MIN, 1000.0, 33), np.linspace(1025.0, T_MAX, 88)])
+    temps = T_GRID
     cp = np.empty_like(temps)
     k = np.empty_like(temps)
     mu = np.empty_like(temps)
