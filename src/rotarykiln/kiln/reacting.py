@@ -13,6 +13,8 @@ import dataclasses
 import math
 from pathlib import Path
 
+import numpy as np
+
 from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
 from rotarykiln.chemistry.species import default_species
@@ -101,7 +103,10 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
     if rho is None:
         raise InputError("material.bulk_density", None, "given (or a library material name)")
     length, radius = case.kiln.length, case.kiln.diameter / 2.0
-    if ch.residence_time is not None:
+    bed_depth = None
+    if case.transport is not None:
+        bed_depth, fill, velocity = _kramers_bed(case, rho)
+    elif ch.residence_time is not None:
         velocity = length / ch.residence_time
         fill = feed * ch.residence_time / length / rho / (math.pi * radius**2)
     elif case.bed is not None:
@@ -151,9 +156,43 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
         closures=closures,
         name=case.name,
         counter_current=ch.counter_current,
+        bed_depth=bed_depth,
         **wall,
     )
     return kiln, int(ch.cells)
+
+
+def _kramers_bed(case, density):
+    """The :class:`KramersBed` of a ``transport:`` section, and the fill and solids speed of
+    its constant-flow profile (the solve's starting point)."""
+    from rotarykiln.kiln.bed_depth import KramersBed
+    from rotarykiln.kiln.coupling import bed_profile_from_case
+
+    t = case.transport
+    if t.model != "kramers" or t.weirs:
+        raise InputError(
+            "transport.model",
+            t.model if t.model != "kramers" else "kramers with weirs",
+            "kramers without weirs (the bed depth solved inside the reacting kiln)",
+        )
+    if t.dam_height is None:
+        raise InputError(
+            "transport.dam_height", None, "given (> 0) for the reacting kiln's bed depth"
+        )
+    if case.material.repose_angle is None:
+        raise InputError("material.repose_angle", None, "given with a transport: section")
+    bed = KramersBed(
+        case.kiln.diameter / 2.0,
+        case.operation.speed,
+        case.kiln.slope,
+        case.material.repose_angle,
+        density,
+        t.dam_height,
+    )
+    profile = bed_profile_from_case(case)
+    fill = float(np.mean(profile.fill))
+    velocity = case.kiln.length / float(profile.mean_residence_time)
+    return bed, fill, velocity
 
 
 def _burner_gas(section, kiln_section):

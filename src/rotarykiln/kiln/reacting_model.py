@@ -50,7 +50,10 @@ class ReactingKiln:
     Chemistry: ``mechanism`` (:class:`~rotarykiln.chemistry.Mechanism`), ``steam_flow`` (kg/s,
     seed 004's constant Q_a for the Ortiz law; None: the local gas H2O flow).
     ``closures`` (:class:`~rotarykiln.kiln.model.Closures`), ``name``; ``counter_current``
-    (gas enters at z = length, against the solids; False: with them, at z = 0).
+    (gas enters at z = length, against the solids; False: with them, at z = 0);
+    ``bed_depth``: a :class:`~rotarykiln.kiln.bed_depth.KramersBed` to solve the bed depth with
+    the balances (fill and hold-up then follow it; ``fill`` and ``bed_velocity`` only seed the
+    solve), or None for the constant ``fill``.
     """
 
     length: float
@@ -80,6 +83,7 @@ class ReactingKiln:
     closures: Closures = field(default_factory=lambda: SEED004_CLOSURES)
     name: str = "reacting kiln"
     counter_current: bool = True
+    bed_depth: object | None = None
 
     def __post_init__(self):
         check_positive("kiln.length", self.length, "m")

@@ -37,6 +37,8 @@ species (and so elements) and energy telescope to the global balances.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from rotarykiln.chemistry.mechanism import CellState as ChemState
@@ -111,6 +113,11 @@ class ReactingResidual:
         self.n_wall = self.wall.n_temperatures
         self.i_species = 2 + self.n_wall  # first species unknown
         self.nv = self.i_species + self.nb + self.ng
+        # bed depth solved with the balances (kiln/bed_depth.py): one more unknown per cell
+        self.depth = k.bed_depth
+        if self.depth is not None:
+            self.i_depth = self.nv
+            self.nv += 1
         bed = BulkBed(
             k.bulk_density,
             float(np.mean(self.cp_bed)),
@@ -140,28 +147,54 @@ class ReactingResidual:
         xb = x[..., i0 : i0 + self.nb]
         qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
         qg = np.broadcast_to(self.gas_inlet, batch + (self.n + 1, len(self.gas_names))).copy()
-        qg[..., self.gas_out, self.gas_pos] = x[..., i0 + self.nb :] * self.gas_scale
+        xg = x[..., i0 + self.nb : i0 + self.nb + self.ng]
+        qg[..., self.gas_out, self.gas_pos] = xg * self.gas_scale
         return tb, tg, qb, qg
 
+    def depth_faces(self, x):
+        """Bed depth at the faces (m): the unknowns, then the dam height at the discharge."""
+        dam = np.broadcast_to(self.depth.dam_height, x.shape[:-2] + (1,))
+        return np.concatenate([x[..., self.i_depth], dam], -1)
+
+    def geometry(self, x):
+        """Cell geometry: the fixed grid, or the cross-sections at the solved bed depth."""
+        if self.depth is None:
+            return self.grid
+        h = self.depth_faces(x)
+        return self.depth.geometry(self.grid, 0.5 * (h[..., 1:] + h[..., :-1]))
+
     # --- closures -------------------------------------------------------------------------------
-    def gas_state(self, g_mean) -> MixtureGas:
+    def gas_state(self, g_mean, geo=None) -> MixtureGas:
         """The freeboard gas of the cells from their mean species flows (kg/s)."""
         k = self.kiln
-        return MixtureGas.of(self.mixture, g_mean, k.pressure, self.grid.freeboard_area)
+        area = (geo or self.grid).freeboard_area
+        return MixtureGas.of(self.mixture, g_mean, k.pressure, area)
 
-    def coefficients(self, tg, tb, tw, g_mean, check=False):
+    def exchange_of(self, geo):
+        """The cross-section exchange on the geometry ``geo``."""
+        if geo is self.grid:
+            return self.exchange
+        return dataclasses.replace(self.exchange, geometry=geo)
+
+    def coefficients(self, tg, tb, tw, g_mean, check=False, geo=None):
         """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell means."""
-        return self.exchange.coefficients(self.gas_state(g_mean), tg, tb, tw, check=check)
+        geo = geo or self.grid
+        gas = self.gas_state(g_mean, geo)
+        return self.exchange_of(geo).coefficients(gas, tg, tb, tw, check=check)
 
     # --- chemistry ------------------------------------------------------------------------------
-    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb):
+    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo=None):
         """Production (..., n, n_species) kg/(s m) and heat absorbed (..., n) W/m."""
         k = self.kiln
+        geo = geo or self.grid
         shape = tb.shape
         flat = int(np.prod(shape))
         qb = np.maximum(qb_out, 0.0).reshape(flat, -1)
         bed = {s: qb[:, i] for i, s in enumerate(self.bed_names)}
-        holdup = qb.sum(-1) / k.bed_velocity
+        if self.depth is None:
+            holdup = qb.sum(-1) / k.bed_velocity
+        else:
+            holdup = (k.bulk_density * np.broadcast_to(geo.bed_area, shape)).reshape(flat)
         xg = self.mixture.mole_fractions(qg_out).reshape(flat, -1)
         pp = {s: k.pressure * xg[:, i] for i, s in enumerate(self.gas_names)}
         if k.steam_flow is not None:
@@ -172,9 +205,9 @@ class ReactingResidual:
             steam = np.zeros(flat)
         inputs = {
             "steam_mass_flow": steam,
-            "drying_conductance": (h_gb * self.grid.chord).reshape(flat),
+            "drying_conductance": np.broadcast_to(h_gb * geo.chord, shape).reshape(flat),
             "bed_heat_input": q_bed_in.reshape(flat),
-            "freeboard_area": np.broadcast_to(self.grid.freeboard_area, shape).reshape(flat),
+            "freeboard_area": np.broadcast_to(geo.freeboard_area, shape).reshape(flat),
         }
         st = ChemState(
             np.maximum(tb, T_FLOOR).reshape(flat),
@@ -206,13 +239,14 @@ class ReactingResidual:
         tl = np.maximum(x[..., 2 : 2 + self.n_wall], T_FLOOR)  # inner wall (.. shell)
         tw = tl[..., 0]
         g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
-        gas = self.gas_state(g_mean)
-        fl, co = self.exchange.flows(gas, tg, tb, tw, self.radiation_scale)
+        geo = self.geometry(x)
+        gas = self.gas_state(g_mean, geo)
+        fl, co = self.exchange_of(geo).flows(gas, tg, tb, tw, self.radiation_scale)
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
         prod, heat, rate, heat_gas, prod_gp = self.rates(
-            tb, tg, qb[..., 1:, :], qg[..., self.gas_out, :], q_bed_in, co["h_gb"]
+            tb, tg, qb[..., 1:, :], qg[..., self.gas_out, :], q_bed_in, co["h_gb"], geo
         )
         w_bed = prod[..., self.bed_idx]
         w_gas = prod[..., self.gas_idx]
@@ -239,6 +273,10 @@ class ReactingResidual:
             dg = sign * (gv[..., :-1, :] - gv[..., 1:, :])
             rg = (dg - dz * w_gas[..., self.gas_pos]) / self.gas_scale
             parts.append(rg * self.q_ref)
+        if self.depth is not None:
+            q_vol = qb.sum(-1) / self.kiln.bulk_density
+            rd = self.depth.residual(self.depth_faces(x), q_vol, dz)
+            parts.append((rd * self.q_ref / self.depth.radius)[..., None])
         R = np.concatenate(parts, axis=-1)
         if not full:
             return R
@@ -247,6 +285,9 @@ class ReactingResidual:
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
         }
+        if self.depth is not None:
+            chemistry["fill"] = geo.fill
+            chemistry["bed_depth"] = geo.depth
         fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
         # production by the bed reactions (the solver's global balance prices it at T_bed)
         return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)

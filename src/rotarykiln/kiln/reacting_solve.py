@@ -32,7 +32,9 @@ def _initial_guess(res: ReactingResidual) -> np.ndarray:
     x[:, 2:i0] = t_wall
     xb = res.bed_in[res.bed_pos] / res.bed_scale
     x[:, i0 : i0 + res.nb] = np.where(res.sqrt_mask, np.sqrt(xb), xb)
-    x[:, i0 + res.nb :] = res.gas_inlet[res.gas_pos] / res.gas_scale
+    x[:, i0 + res.nb : i0 + res.nb + res.ng] = res.gas_inlet[res.gas_pos] / res.gas_scale
+    if res.depth is not None:
+        x[:, res.i_depth] = res.depth.initial_depth(k.length, res.z_nodes[:-1], k.feed_flow)
     return x
 
 
@@ -89,6 +91,8 @@ def solve_reacting(
     res.q_ref = q_ref
     i0 = res.i_species
     species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
+    if res.depth is not None:
+        species.append("bed depth (Kramers)")
     where = steady.locator(res.z, steady.equation_names(res.wall, species))
     floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
     kw = dict(tol=tol, max_iter=max_iter, temperature_vars=i0, where=where, step_floor=floor)
@@ -103,7 +107,8 @@ def solve_reacting(
     )
     # validity ranges of the heat-transfer closures, checked once on the converged state
     g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
-    res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True)
+    geo = res.geometry(x)
+    res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True, geo=geo)
     # global balances
     dz = res.dz
     hb = res.cp_bed * (tb_n[:, None] - T_REF)
@@ -152,11 +157,21 @@ def solve_reacting(
         heat_to_solids=heat_to_solids,
         energy_closure=float(closure),
         element_closure={e: float(v) for e, v in elements.items()},
-        residence_time=kiln.residence_time,
-        fill=kiln.fill,
+        residence_time=_residence_time(res, geo, qb),
+        fill=kiln.fill if res.depth is None else float(np.mean(geo.fill)),
         feed=dict(kiln.feed),
         counter_current=kiln.counter_current,
     )
+
+
+def _residence_time(res: ReactingResidual, geo, qb) -> float:
+    """Mean solids residence time, s: the kiln's L/v, or with the bed depth solved the integral
+    of hold-up over local mass flow, :math:`\\int \rho_b A_{bed}/\\dot m\\,dz`."""
+    k = res.kiln
+    if res.depth is None:
+        return k.residence_time
+    m = np.maximum(0.5 * (qb[1:].sum(-1) + qb[:-1].sum(-1)), 1e-300)
+    return float(np.sum(k.bulk_density * geo.bed_area / m) * res.dz)
 
 
 def _continuation(res: ReactingResidual):
