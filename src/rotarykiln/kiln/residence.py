@@ -15,8 +15,11 @@ correlation as for ``rotarykiln run`` (:func:`rotarykiln.rtd.predict.peclet_from
 
 Each residence-time class :math:`\tau'` crosses the kiln at :math:`L/\tau'` through the
 converged kiln's temperature, CO2 and heat-input profiles (frozen: a segregated parcel does not
-change them); its conversion is integrated by :mod:`rotarykiln.chemistry.plugflow` and the
-outlet conversion is the RTD average (:mod:`rotarykiln.chemistry.segregated`).
+change them), with the plug-flow equations of :mod:`rotarykiln.chemistry.plugflow`. In the kiln
+coordinate z all classes, and the plug-flow class at :math:`\tau = L/u_s`, form one vector ODE
+integrated in one batch
+(:func:`rotarykiln.chemistry.segregated.batch_plug_flow_conversion`); the outlet conversion is
+the RTD average (:func:`rotarykiln.chemistry.segregated.kiln_segregated_conversion`).
 """
 
 from __future__ import annotations
@@ -25,7 +28,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotarykiln.chemistry.plugflow import integrate_plug_flow
 from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.chemistry.segregated import SegregatedResult, kiln_segregated_conversion
 from rotarykiln.errors import InputError
@@ -68,7 +70,8 @@ class ResidenceTimeEffects:
 
     ``kiln_conversion``: the coupled kiln solution (plug flow with the energy balance);
     ``frozen_plug_conversion``: plug flow at :math:`\tau = L/u_s` through the frozen profiles
-    (an ODE integration: its difference from ``kiln_conversion`` is the discretisation error);
+    (an ODE integration, in the batch of the RTD classes: its difference from
+    ``kiln_conversion`` is the discretisation error of the kiln grid);
     ``plug``: plug flow through the frozen profiles at the mean residence time of the RTD;
     ``segregated``: the RTD average; ``peclet``, ``dispersion`` (m2/s); ``result``
     (:class:`~rotarykiln.chemistry.segregated.SegregatedResult`).
@@ -164,22 +167,12 @@ def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: i
         n_tau=n_tau,
         t_max=t_max,
         n=801,
-    )
-    frozen = integrate_plug_flow(
-        kiln.mechanism,
-        kiln.feed,
-        kiln.length,
-        kiln.bed_velocity,
-        (z, sol.t_bed),
-        (z, sol.t_gas),
-        pp,
-        inputs,
-        n_points=2,
+        extra_residence_times=[kiln.length / kiln.bed_velocity],
     )
     return ResidenceTimeEffects(
         species,
         float(sol.conversion(species)[-1]),
-        float(frozen.conversion(species)[-1]),
+        float(res.class_conversion[-1]),
         float(pe),
         float(dispersion),
         res,
