@@ -1,21 +1,39 @@
-"""Sweep designs: full grids and one-at-a-time ranges over case field paths.
+"""Study designs over case field paths: grids, one-at-a-time, Latin hypercube, Sobol, Monte Carlo.
 
 A design is a list of :class:`CaseSpec`: an id, the values to set (path -> value as given, a
-number or a string with units such as ``"62 kg/h"``) and a group (``"base"``, ``"grid"`` or the
-path varied one at a time).
+number or a string with units such as ``"62 kg/h"``) and a group (``"base"``, ``"grid"``, the
+path varied one at a time, ``"lhs"``, ``"sobol"``, ``"mc"``). Sampled designs draw from a
+:class:`Param` (path, distribution, unit), parsed from ``"operation.speed=uniform(1 rpm, 3 rpm)"``.
 """
 
 from __future__ import annotations
 
+import difflib
 import itertools
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
 from rotarykiln.errors import InputError
 
-__all__ = ["CaseSpec", "grid", "one_at_a_time", "si_value"]
+__all__ = [
+    "DISTRIBUTIONS",
+    "CaseSpec",
+    "Param",
+    "as_params",
+    "cases_from_unit",
+    "grid",
+    "latin_hypercube",
+    "monte_carlo",
+    "one_at_a_time",
+    "parse_param",
+    "si_value",
+    "sobol_sequence",
+]
 
 
 @dataclass(frozen=True)
@@ -97,3 +115,355 @@ def si_value(value: Any) -> float:
         except Exception:
             return math.nan
     return math.nan
+
+
+# ---------------------------------------------------------------------------------------------
+# Distributions and sampled designs (Latin hypercube, Sobol sequence, Monte Carlo)
+
+DISTRIBUTIONS = ("uniform", "normal", "lognormal", "triangular")
+"""Distribution names accepted by :func:`parse_param`."""
+
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+_SPEC = re.compile(r"^\s*([A-Za-z_]+)\s*\((.*)\)\s*$")
+_NARGS = {"uniform": 2, "normal": 2, "lognormal": 2, "triangular": 3}
+_SIGNATURE = {
+    "uniform": "uniform(low, high) with low < high",
+    "normal": "normal(mean, sd) with sd > 0",
+    "lognormal": "lognormal(median, sigma) with median > 0 and sigma > 0 (sd of ln x, -)",
+    "triangular": "triangular(low, mode, high) with low <= mode <= high and low < high",
+}
+
+
+@dataclass(frozen=True)
+class Param:
+    """An uncertain or varied case field: a dotted path and a distribution in a unit.
+
+    Attributes
+    ----------
+    path : str
+        Dotted field path into the case (``"operation.speed"``).
+    dist : str
+        One of :data:`DISTRIBUTIONS`.
+    args : tuple of float
+        Distribution parameters in ``unit`` (lognormal: median in ``unit``, sigma of ln x, -).
+    unit : str
+        Unit as typed (``"rpm"``); "" for a plain number (SI or dimensionless).
+    """
+
+    path: str
+    dist: str
+    args: tuple[float, ...]
+    unit: str = ""
+
+    def ppf(self, u) -> np.ndarray:
+        """Values (in ``unit``) at probabilities ``u`` in (0, 1): the inverse CDF."""
+        from scipy import stats
+
+        u = np.asarray(u, dtype=float)
+        a = self.args
+        if self.dist == "uniform":
+            return a[0] + (a[1] - a[0]) * u
+        if self.dist == "normal":
+            return stats.norm.ppf(u, loc=a[0], scale=a[1])
+        if self.dist == "lognormal":
+            return stats.lognorm.ppf(u, s=a[1], scale=a[0])
+        c = (a[1] - a[0]) / (a[2] - a[0])
+        return stats.triang.ppf(u, c, loc=a[0], scale=a[2] - a[0])
+
+    @property
+    def bounded(self) -> bool:
+        """True for distributions with finite support (uniform, triangular)."""
+        return self.dist in ("uniform", "triangular")
+
+    @property
+    def nominal(self) -> float:
+        """Median of the distribution, in ``unit``."""
+        return float(self.ppf(0.5))
+
+    def value(self, x: float):
+        """Case-file value of ``x`` (in ``unit``): ``"1.234 rpm"`` or a float."""
+        return f"{float(x):.10g} {self.unit}" if self.unit else float(x)
+
+    def __str__(self) -> str:
+        u = f" {self.unit}" if self.unit else ""
+        parts = [f"{v:g}{u}" for v in self.args]
+        if self.dist == "lognormal":
+            parts[1] = f"{self.args[1]:g}"
+        return f"{self.path}={self.dist}({', '.join(parts)})"
+
+
+def _split_args(text: str) -> list[str]:
+    return [t.strip() for t in text.split(",")] if text.strip() else []
+
+
+def _magnitude(field: str, text: str, unit: str, delta: bool) -> float:
+    """Magnitude of ``text`` in ``unit``; ``delta``: a difference (sd of a temperature in degC)."""
+    m = _NUMBER.match(text)
+    if m is None:
+        raise InputError(field, text, "a number with an optional unit such as 1.5 rpm")
+    number, u = float(m.group(1)), m.group(2)
+    if u == unit or not u:
+        return number
+    if not unit:
+        raise InputError(field, text, "a plain number like the first argument (no unit)")
+    from rotarykiln.units import ureg
+
+    try:
+        q = ureg.Quantity(number, u)
+        target = ureg.Unit(unit)
+        if delta and q.units.dimensionality == ureg.kelvin.dimensionality:
+            kelvin = q.to("delta_degC").magnitude if "deg" in u else q.to("kelvin").magnitude
+            return (
+                float(kelvin * ureg.Quantity(1, "delta_degC").to(f"delta_{unit}").magnitude)
+                if unit.startswith("deg")
+                else float(kelvin)
+            )
+        return float(q.to(target).magnitude)
+    except Exception:
+        raise InputError(field, text, f"a quantity convertible to {unit}") from None
+
+
+def parse_param(
+    text: str | None = None, *, path: str | None = None, spec: str | None = None
+) -> Param:
+    """Parse ``"PATH=DIST(ARGS)"`` (or ``path`` and ``spec``) into a :class:`Param`.
+
+    Parameters
+    ----------
+    text : str
+        ``"operation.speed=uniform(1 rpm, 3 rpm)"``; arguments carry the unit of the field
+        (the first one's unit is used, the others are converted to it). Distributions:
+        ``uniform(low, high)``, ``normal(mean, sd)``, ``lognormal(median, sigma)`` (sigma: the
+        standard deviation of ln x, dimensionless), ``triangular(low, mode, high)``.
+    path, spec : str
+        The two halves given separately.
+
+    Returns
+    -------
+    Param
+        Path, distribution name, arguments in the unit as typed, the unit.
+
+    Examples
+    --------
+    >>> p = parse_param("operation.speed=uniform(1 rpm, 3 rpm)")
+    >>> p.dist, p.args, p.unit, p.value(p.ppf(0.5))
+    ('uniform', (1.0, 3.0), 'rpm', '2 rpm')
+    >>> parse_param("heat.gas.inlet_temperature=normal(535 K, 10 K)").args
+    (535.0, 10.0)
+    >>> parse_param("kiln.slope=normal(1 deg, -1 deg)")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: kiln.slope: normal(1 deg, -1 deg) is not normal(mean, sd) with sd > 0
+
+    References
+    ----------
+    The distributions are scipy.stats' uniform, norm, lognorm (s = sigma, scale = median) and
+    triang.
+    """
+    if text is not None:
+        path, sep, spec = text.partition("=")
+        if not sep:
+            raise InputError(
+                "--param", text, 'PATH=DIST(ARGS), e.g. "operation.speed=uniform(1 rpm, 3 rpm)"'
+            )
+    path = (path or "").strip()
+    spec = (spec or "").strip()
+    if not path:
+        raise InputError("--param", text or spec, "PATH=DIST(ARGS) with a field path")
+    m = _SPEC.match(spec)
+    if m is None:
+        raise InputError(
+            path, spec, f"a distribution such as uniform(1 rpm, 3 rpm) ({', '.join(DISTRIBUTIONS)})"
+        )
+    name = m.group(1).lower()
+    if name not in DISTRIBUTIONS:
+        hint = difflib.get_close_matches(name, DISTRIBUTIONS, n=1)
+        mean = f" (did you mean {hint[0]}?)" if hint else ""
+        raise InputError(path, name, f"a distribution: {', '.join(DISTRIBUTIONS)}{mean}")
+    args = _split_args(m.group(2))
+    if len(args) != _NARGS[name]:
+        raise InputError(path, spec, _SIGNATURE[name])
+    first = _NUMBER.match(args[0])
+    if first is None:
+        raise InputError(path, args[0], "a number with an optional unit such as 1.5 rpm")
+    unit = first.group(2)
+    if unit:
+        from rotarykiln.units import ureg
+
+        try:
+            ureg.Unit(unit)
+        except Exception:
+            raise InputError(path, args[0], "a quantity with a known unit") from None
+    vals = []
+    for i, a in enumerate(args):
+        delta = name == "normal" and i == 1
+        if name == "lognormal" and i == 1:
+            sm = _NUMBER.match(a)
+            if sm is None or sm.group(2):
+                raise InputError(path, spec, _SIGNATURE[name])
+            vals.append(float(sm.group(1)))
+        else:
+            vals.append(_magnitude(path, a, unit, delta))
+    ok = all(math.isfinite(v) for v in vals)
+    if name == "uniform":
+        ok = ok and vals[0] < vals[1]
+    elif name in ("normal",):
+        ok = ok and vals[1] > 0
+    elif name == "lognormal":
+        ok = ok and vals[0] > 0 and vals[1] > 0
+    else:
+        ok = ok and vals[0] <= vals[1] <= vals[2] and vals[0] < vals[2]
+    if not ok:
+        raise InputError(path, spec, _SIGNATURE[name])
+    return Param(path, name, tuple(vals), unit)
+
+
+def as_params(params) -> list[Param]:
+    """Params from a list of Param/str or a mapping path -> spec; checks unique paths."""
+    if isinstance(params, Param | str):
+        params = [params]
+    if isinstance(params, Mapping):
+        out = [parse_param(path=k, spec=v) if isinstance(v, str) else v for k, v in params.items()]
+    else:
+        out = [p if isinstance(p, Param) else parse_param(p) for p in params]
+    if not out:
+        raise InputError("study.parameters", "[]", "at least one parameter")
+    paths = [p.path for p in out]
+    dup = [p for p in paths if paths.count(p) > 1]
+    if dup:
+        raise InputError("study.parameters", dup[0], "given once")
+    return out
+
+
+def _check_n(n) -> int:
+    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
+        raise InputError("study.n", n, "a whole number >= 1")
+    return int(n)
+
+
+def cases_from_unit(params, unit_samples, group: str = "sample", start: int = 0) -> list[CaseSpec]:
+    """Map points of the unit hypercube (rows, one column per param) to cases via the ppf.
+
+    Parameters
+    ----------
+    params : sequence of Param
+    unit_samples : array, shape (n, len(params)), in (0, 1) [-]
+    group : str
+    start : int
+        First case id.
+
+    Returns
+    -------
+    list of CaseSpec
+        Values in each parameter's unit, as case-file strings.
+    """
+    params = as_params(params)
+    u = np.atleast_2d(np.asarray(unit_samples, dtype=float))
+    if u.shape[1] != len(params):
+        raise InputError("study.samples", u.shape, f"{len(params)} columns (one per parameter)")
+    cols = [p.ppf(u[:, j]) for j, p in enumerate(params)]
+    return [
+        CaseSpec(start + i, {p.path: p.value(cols[j][i]) for j, p in enumerate(params)}, group)
+        for i in range(u.shape[0])
+    ]
+
+
+def latin_hypercube(params, n: int, seed: int | None = 0) -> list[CaseSpec]:
+    """Latin hypercube design of ``n`` cases (scipy.stats.qmc.LatinHypercube).
+
+    Parameters
+    ----------
+    params : sequence of Param or str
+        ``"path=dist(args)"`` (see :func:`parse_param`).
+    n : int
+        Number of cases.
+    seed : int or None
+        Random seed (reproducible designs: a resumed study draws the same cases).
+
+    Returns
+    -------
+    list of CaseSpec
+        Group ``"lhs"``.
+
+    Examples
+    --------
+    >>> cs = latin_hypercube(["a=uniform(0, 1)", "b=normal(5 m, 1 m)"], 4)
+    >>> sorted(int(c.values["a"] * 4) for c in cs)
+    [0, 1, 2, 3]
+
+    References
+    ----------
+    McKay, Beckman & Conover (1979), Technometrics 21, 239-245.
+    """
+    from scipy.stats import qmc
+
+    params = as_params(params)
+    u = qmc.LatinHypercube(d=len(params), seed=seed).random(_check_n(n))
+    return cases_from_unit(params, u, "lhs")
+
+
+def sobol_sequence(params, n: int, seed: int | None = 0) -> list[CaseSpec]:
+    """Scrambled Sobol low-discrepancy design of ``n`` cases (scipy.stats.qmc.Sobol).
+
+    Parameters
+    ----------
+    params : sequence of Param or str
+    n : int
+        Number of cases (a power of 2 keeps the sequence balanced).
+    seed : int or None
+        Scrambling seed.
+
+    Returns
+    -------
+    list of CaseSpec
+        Group ``"sobol"``.
+
+    Examples
+    --------
+    >>> len(sobol_sequence(["a=uniform(0, 1)"], 8))
+    8
+
+    References
+    ----------
+    Sobol' (1967), USSR Comput. Math. Math. Phys. 7, 86-112; Owen (1998) scrambling.
+    """
+    import warnings
+
+    from scipy.stats import qmc
+
+    params = as_params(params)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # balance warning for n not a power of 2
+        u = qmc.Sobol(d=len(params), scramble=True, seed=seed).random(_check_n(n))
+    return cases_from_unit(params, u, "sobol")
+
+
+def monte_carlo(params, n: int, seed: int | None = 0) -> list[CaseSpec]:
+    """Plain Monte Carlo design: ``n`` independent random draws of every parameter.
+
+    Parameters
+    ----------
+    params : sequence of Param or str
+    n : int
+        Number of cases.
+    seed : int or None
+        numpy Generator seed.
+
+    Returns
+    -------
+    list of CaseSpec
+        Group ``"mc"``.
+
+    Examples
+    --------
+    >>> len(monte_carlo(["a=triangular(0, 1, 3)"], 5))
+    5
+
+    References
+    ----------
+    Metropolis & Ulam (1949), J. Am. Stat. Assoc. 44, 335-341.
+    """
+    params = as_params(params)
+    rng = np.random.default_rng(seed)
+    u = rng.random((_check_n(n), len(params)))
+    return cases_from_unit(params, np.clip(u, 1e-12, 1 - 1e-12), "mc")

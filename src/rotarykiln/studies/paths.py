@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import copy
+import difflib
 from collections.abc import Mapping, MutableMapping
 from typing import Any
 
@@ -17,14 +18,21 @@ def _split(path: str) -> list[str]:
     return path.split(".")
 
 
+def _missing(node: Mapping, key: str, upto: str) -> InputError:
+    keys = [str(k) for k in node]
+    hint = difflib.get_close_matches(key, keys, n=1, cutoff=0.6)
+    mean = (
+        f"; did you mean {upto.rpartition('.')[0] + '.' if '.' in upto else ''}{hint[0]}?"
+        if hint
+        else ""
+    )
+    return InputError("sweep.parameter", upto, f"an existing field (keys: {', '.join(keys)}){mean}")
+
+
 def _child(node: Any, key: str, path: str, upto: str):
     if isinstance(node, Mapping):
         if key not in node:
-            raise InputError(
-                "sweep.parameter",
-                upto,
-                f"an existing field (keys: {', '.join(map(str, node))})",
-            )
+            raise _missing(node, key, upto)
         return node[key]
     if isinstance(node, list):
         try:
@@ -71,11 +79,7 @@ def set_path(case: MutableMapping, path: str, value: Any, *, create: bool = Fals
     last = keys[-1]
     if isinstance(node, MutableMapping):
         if last not in node and not create:
-            raise InputError(
-                "sweep.parameter",
-                path,
-                f"an existing field (keys: {', '.join(map(str, node))})",
-            )
+            raise _missing(node, last, path)
         node[last] = value
     elif isinstance(node, list):
         try:
