@@ -6,6 +6,9 @@
 - :func:`newton_with_continuation`: banded Newton from the guess, and on failure a
   continuation, given as a list of :func:`ramp` stages (a parameter of the residual ramped
   0 -> 1, in fixed or adaptive steps);
+- :func:`newton_sequenced`: the same from a grid-sequenced start (the unknowns solved on a
+  coarser grid, interpolated by :func:`interpolate_unknowns`), for fine grids of the reacting
+  kiln: the damped first Newton iterations then run on the cheap coarse grid;
 - :func:`check_finite`: no non-finite value leaves a solver;
 - :func:`profile_fields`: the temperature profiles and solver figures both solutions hold.
 """
@@ -25,6 +28,8 @@ __all__ = [
     "locator",
     "ramp",
     "newton_with_continuation",
+    "newton_sequenced",
+    "interpolate_unknowns",
     "check_finite",
     "profile_fields",
     "FIXED_STEPS",
@@ -119,6 +124,92 @@ def newton_with_continuation(F, x0, scale, continuation, **kw):
         return x, rep.iterations
     except ConvergenceError:
         return continuation(F, np.array(x0, dtype=float), scale, kw)
+
+
+#: Grid sequencing: a grid of more than SEQUENCE_MIN cells starts from the solution on a grid
+#: SEQUENCE_RATIO times coarser (itself sequenced), solved to SEQUENCE_TOL (only a start).
+SEQUENCE_MIN = 30
+SEQUENCE_RATIO = 5
+SEQUENCE_TOL = 1e-6
+
+
+def interpolate_unknowns(src, x, dst) -> np.ndarray:
+    """Unknowns of the kiln residual ``dst`` interpolated in z from the unknowns ``x`` of
+    ``src`` (the same kiln on another grid), K and scaled flows.
+
+    Face unknowns (bed temperature and species at faces 1..n, gas temperature and species
+    where the gas leaves each cell) come from the face profiles of ``src.faces(x)``, inlet
+    values included; the bed depth (if solved) from ``src.depth_faces(x)``; every other
+    unknown (wall temperatures) is interpolated at the cell centres. Residuals need ``n``,
+    ``nv``, ``z``, ``z_nodes``, ``faces``, ``gas_out``, ``i_species``, ``nb``, ``bed_pos``,
+    ``gas_pos``, ``sqrt_mask``, ``bed_scale``, ``gas_scale`` (and ``depth``, ``i_depth``).
+    """
+    tb, tg, qb, qg = src.faces(x)
+    zs, zd = src.z_nodes, dst.z_nodes
+    out = np.empty((dst.n, dst.nv))
+    for v in range(dst.nv):
+        out[:, v] = np.interp(dst.z, src.z, x[:, v])
+    out[:, 0] = np.interp(zd, zs, tb)[1:]
+    out[:, 1] = np.interp(zd, zs, tg)[dst.gas_out]
+    i0, nb = dst.i_species, dst.nb
+    for m, p in enumerate(dst.bed_pos):
+        q = np.interp(zd, zs, qb[:, p])[1:] / dst.bed_scale
+        out[:, i0 + m] = np.sqrt(np.maximum(q, 0.0)) if dst.sqrt_mask[m] else q
+    for m, p in enumerate(dst.gas_pos):
+        out[:, i0 + nb + m] = np.interp(zd, zs, qg[:, p])[dst.gas_out] / dst.gas_scale
+    if getattr(dst, "depth", None) is not None:
+        out[:, dst.i_depth] = np.interp(zd, zs, src.depth_faces(x))[:-1]
+    return out
+
+
+def newton_sequenced(
+    F,
+    x0,
+    scale,
+    continuation,
+    *,
+    make_residual: Callable[[int], object],
+    min_cells: int = SEQUENCE_MIN,
+    ratio: int = SEQUENCE_RATIO,
+    coarse_tol: float = SEQUENCE_TOL,
+    **kw,
+):
+    """:func:`newton_with_continuation` on the kiln residual ``F`` from a grid-sequenced start.
+
+    For more than ``min_cells`` cells the guess ``x0`` is carried to a grid ``ratio`` times
+    coarser (``make_residual(n)`` builds the residual of the same kiln on ``n`` cells, its
+    ``q_ref`` set), solved there by plain Newton to ``coarse_tol`` (itself from a sequenced
+    start) and interpolated back (:func:`interpolate_unknowns`); Newton on ``F`` then starts
+    there and converges to ``kw["tol"]`` as usual. If the coarse or the fine Newton fails, the
+    solve falls back to :func:`newton_with_continuation` from ``x0`` (the path without
+    sequencing), so only the time changes.
+
+    Returns ``(x, Newton iterations on the grid of F)``.
+    """
+    if F.n > min_cells:
+        coarse_kw = dict(kw, tol=coarse_tol, where=None)
+
+        def solved(R, x_start):
+            """Unknowns of R (Newton from a sequenced start), None if Newton fails."""
+            if R.n > min_cells:
+                C = make_residual(max(R.n // ratio, 4))
+                xc = solved(C, interpolate_unknowns(R, x_start, C))
+                if xc is not None:
+                    x_start = interpolate_unknowns(C, xc, R)
+            try:
+                return newton.newton_banded(R, x_start, scale, **coarse_kw)[0]
+            except ConvergenceError:
+                return None
+
+        C = make_residual(max(F.n // ratio, 4))
+        xc = solved(C, interpolate_unknowns(F, np.asarray(x0, dtype=float), C))
+        if xc is not None:
+            try:
+                x, rep = newton.newton_banded(F, interpolate_unknowns(C, xc, F), scale, **kw)
+                return x, rep.iterations
+            except ConvergenceError:
+                pass
+    return newton_with_continuation(F, x0, scale, continuation, **kw)
 
 
 def check_finite(profiles: dict, per_cell: dict, z, iterations: int) -> None:
