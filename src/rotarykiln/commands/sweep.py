@@ -1,8 +1,14 @@
-"""``rotarykiln sweep``: run a model over a grid or one-at-a-time ranges of case fields.
+"""``rotarykiln sweep``: run a model over a design of case fields, persistently.
 
 The model is a name (``heat``, ``transport``: see :mod:`rotarykiln.studies.models`) or any
 importable function ``module:function`` taking a case (nested dict) and returning a dict of
-scalars. Values keep their units as in a case file.
+scalars. Values keep their units as in a case file. Designs: ``--grid`` (full factorial),
+``--oat`` (one at a time), or ``--lhs N`` / ``--sobol N`` / ``--mc N`` samples of the
+``--param PATH=DIST(ARGS)`` distributions (uniform, normal, lognormal, triangular).
+
+Rows are appended to the Parquet dataset ``--store`` (default OUT/runs) as they arrive; run the
+same command again to resume: only the cases not yet stored run. The exit code is 1 when any
+case failed (its error is in the table).
 
 Example::
 
@@ -10,12 +16,17 @@ Example::
         --model rotarykiln.studies.examples:ortiz_isothermal_burn_off \\
         --oat chemistry.residence_time="3000 s,6480 s,10000 s" \\
         --oat chemistry.gas.steam_flow="0.0025 kg/s,0.005 kg/s" --out results
+
+    rotarykiln sweep --case heat/tscheng_A16 --model heat --lhs 200 \\
+        --param "operation.speed=uniform(1 rpm, 3 rpm)" \\
+        --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" --out lhs/
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import sys
 from pathlib import Path
 
 import yaml
@@ -24,7 +35,10 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.commands._args import out_dir, plain, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.studies import grid, one_at_a_time, run_sweep
+from rotarykiln.studies.design import as_params, latin_hypercube, monte_carlo, sobol_sequence
 from rotarykiln.studies.runner import EXECUTORS
+
+SAMPLED = {"lhs": latin_hypercube, "sobol": sobol_sequence, "mc": monte_carlo}
 
 __all__ = ["register", "run"]
 
@@ -56,12 +70,60 @@ def register(sub) -> None:
         metavar="PATH=V1,V2",
         help="one-at-a-time values of a field (repeatable)",
     )
-    p.add_argument("--executor", choices=EXECUTORS, default="process")
-    p.add_argument("--workers", type=int, default=None, help="processes (default: all CPUs)")
+    for kind, what in (
+        ("lhs", "Latin hypercube"),
+        ("sobol", "scrambled Sobol sequence"),
+        ("mc", "Monte Carlo"),
+    ):
+        p.add_argument(f"--{kind}", type=int, metavar="N", help=f"{what} of N cases over --param")
+    add_study_options(p)
     p.add_argument("--name", default="sweep", help="base name of the output files")
     p.add_argument("--json", action="store_true", help="print the table as JSON records")
     p.add_argument("--out", help="write NAME.csv (NAME.parquet if pyarrow) and NAME.png here")
     p.set_defaults(func=run)
+
+
+def add_study_options(p, params: bool = True) -> None:
+    """Options shared by sweep, sensitivity and calibrate: params, seed, executor, store."""
+    if params:
+        p.add_argument(
+            "--param",
+            action="append",
+            default=[],
+            metavar="PATH=DIST(ARGS)",
+            help='a sampled field, e.g. "operation.speed=uniform(1 rpm, 3 rpm)" (repeatable)',
+        )
+        p.add_argument("--seed", type=int, default=0, help="random seed of sampled designs")
+    p.add_argument("--executor", choices=EXECUTORS, default="process")
+    p.add_argument("--workers", type=int, default=None, help="processes (default: all CPUs)")
+    p.add_argument(
+        "--scheduler",
+        default=None,
+        help="with --executor dask: a scheduler address tcp://host:port (default: LocalCluster)",
+    )
+    p.add_argument(
+        "--store", default=None, help="Parquet dataset folder of the runs (default: OUT/runs)"
+    )
+    p.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="progress bar on stderr (default: when it is a terminal)",
+    )
+
+
+def runner_options(args, folder) -> dict:
+    """run_sweep keyword arguments from the shared options."""
+    store = args.store or (str(Path(folder) / "runs") if folder is not None else None)
+    if args.scheduler and args.executor != "dask":
+        raise InputError("--scheduler", args.scheduler, "used with --executor dask")
+    return {
+        "executor": args.executor,
+        "max_workers": args.workers,
+        "dask_scheduler": args.scheduler,
+        "store": store,
+        "progress": args.progress,
+    }
 
 
 def _ranges(items: list[str], option: str) -> dict[str, list]:
@@ -112,27 +174,52 @@ def _load_case(spec: str) -> dict:
 
 
 def run(args) -> int:
-    if bool(args.grid) == bool(args.oat):
-        raise InputError("sweep", "--grid/--oat", "exactly one kind of range (--grid or --oat)")
+    kinds = [k for k in ("grid", "oat") if getattr(args, k)]
+    kinds += [k for k in SAMPLED if getattr(args, k) is not None]
+    if len(kinds) != 1:
+        raise InputError(
+            "sweep",
+            "/".join(f"--{k}" for k in kinds) or "no design",
+            "exactly one design (--grid, --oat, --lhs N, --sobol N or --mc N)",
+        )
+    kind = kinds[0]
+    if kind in SAMPLED and not args.param:
+        raise InputError(f"--{kind}", getattr(args, kind), "given with --param PATH=DIST(ARGS)")
+    if kind not in SAMPLED and args.param:
+        raise InputError("--param", args.param[0], "used with --lhs, --sobol or --mc")
     base = _load_case(args.case)
     func = _load_model(args.model)
-    design = (
-        grid(_ranges(args.grid, "--grid"))
-        if args.grid
-        else one_at_a_time(_ranges(args.oat, "--oat"))
-    )
-    res = run_sweep(func, base, design, executor=args.executor, max_workers=args.workers)
-    if args.out:
-        folder = out_dir(args.out, "results")
+    if kind == "grid":
+        design = grid(_ranges(args.grid, "--grid"))
+    elif kind == "oat":
+        design = one_at_a_time(_ranges(args.oat, "--oat"))
+    else:
+        design = SAMPLED[kind](as_params(args.param), getattr(args, kind), seed=args.seed)
+    folder = out_dir(args.out, "results") if args.out else None
+    res = run_sweep(func, base, design, **runner_options(args, folder))
+    if folder is not None:
         res.write(folder, name=args.name)
         if res.outputs and len(res.failed) < len(res.frame):
             res.save_plot(folder / f"{args.name}.png")
     if args.json:
         print_json(res.frame.to_dict(orient="records"))
     else:
-        cols = [c for c in res.frame.columns if not c.endswith(" [SI]") and c != "elapsed_s"]
+        cols = [
+            c
+            for c in res.frame.columns
+            if not c.endswith(" [SI]") and c not in ("elapsed_s", "hash")
+        ]
         print(res.frame[cols].to_string(index=False))
         print(
-            f"{len(res.frame)} cases, {res.n_failed} failed, {res.wall_time:.2f} s ({res.executor})"
+            f"{len(res.frame)} cases ({res.meta.get('ran', len(res.frame))} run now, "
+            f"{res.meta.get('reused', 0)} from the store), {res.n_failed} failed, "
+            f"{res.wall_time:.2f} s ({res.executor})"
         )
+    if res.n_failed:
+        print(
+            f"rotarykiln sweep: {res.n_failed} of {len(res.frame)} cases failed "
+            "(see the error column)",
+            file=sys.stderr,
+        )
+        return 1
     return 0

@@ -7,11 +7,22 @@ scalars, the contract of :func:`rotarykiln.studies.runner.run_sweep`.
 from __future__ import annotations
 
 import math
+import os
+import time
+from pathlib import Path
 
 from rotarykiln.errors import InputError
 from rotarykiln.units import to_si
 
-__all__ = ["first_order_conversion", "ortiz_isothermal_burn_off", "failing_model"]
+__all__ = [
+    "first_order_conversion",
+    "ortiz_isothermal_burn_off",
+    "failing_model",
+    "ishigami",
+    "sleepy_square",
+    "crash_once",
+    "trivial_model",
+]
 
 
 def first_order_conversion(case: dict) -> dict:
@@ -68,3 +79,59 @@ def failing_model(case: dict) -> dict:
     if x == 0:
         return [x]  # type: ignore[return-value]
     return {"y": 2.0 * x, "label": "ok"}
+
+
+def ishigami(case: dict) -> dict:
+    r"""Ishigami function, the standard test of sensitivity indices.
+
+    .. math:: y = \sin x_1 + a \sin^2 x_2 + b x_3^4 \sin x_1,\quad a = 7,\ b = 0.1
+
+    with :math:`x_i` uniform on :math:`[-\pi, \pi]`. Analytic indices: S1 = 0.3139, 0.4424,
+    0; ST = 0.5576, 0.4424, 0.2437.
+
+    Parameters
+    ----------
+    case : dict
+        Fields ``x1``, ``x2``, ``x3`` (plain numbers, -).
+
+    Returns
+    -------
+    dict
+        ``{"y": value}`` (-).
+
+    Examples
+    --------
+    >>> round(ishigami({"x1": 1.0, "x2": 0.5, "x3": 2.0})["y"], 4)
+    3.7968
+
+    References
+    ----------
+    Ishigami & Homma (1990), Proc. ISUMA '90, 398-403; Sobol' & Levitan (1999), Comput. Phys.
+    Commun. 117, 52-61 (analytic indices).
+    """
+    x1, x2, x3 = (float(case[k]) for k in ("x1", "x2", "x3"))
+    y = math.sin(x1) + 7.0 * math.sin(x2) ** 2 + 0.1 * x3**4 * math.sin(x1)
+    return {"y": y}
+
+
+def sleepy_square(case: dict) -> dict:
+    """``y = x**2`` after sleeping ``sleep_s`` seconds (a stand-in for a slow model in tests)."""
+    time.sleep(float(case.get("sleep_s", 0.0)))
+    x = float(case["x"])
+    return {"y": x * x}
+
+
+def crash_once(case: dict) -> dict:
+    """Kills its worker process once (for ``x == crash_at``, if file ``marker`` does not exist
+    yet: it is created first), else returns ``y = 2 x``. Tests the runner's recovery."""
+    x = float(case["x"])
+    marker = Path(case["marker"])
+    if x == float(case["crash_at"]) and not marker.exists():
+        marker.write_text("crashed")
+        os._exit(1)
+    return {"y": 2.0 * x}
+
+
+def trivial_model(case: dict) -> dict:
+    """Returns ``{"y": x}`` at once: measures the runner's own overhead per case."""
+    return {"y": case["x"]}

@@ -96,6 +96,25 @@ class SweepResult:
         frame = pd.DataFrame.from_records(records)
         return cls(frame, tuple(params), tuple(outputs), wall_time, executor)
 
+    @classmethod
+    def from_records(cls, records: Sequence[dict], params: Sequence[str], **kwargs):
+        """Assemble the table from flat records (the runner's and the store's row format)."""
+        params = list(params)
+        outputs: list[str] = []
+        for r in records:
+            for k in str(r.get("output_names") or "").split(","):
+                if k and k not in outputs:
+                    outputs.append(k)
+        cols = ["case_id", "group"]
+        for p in params:
+            cols += [p, p + SI_SUFFIX]
+        cols += outputs + ["error", "elapsed_s", "hash"]
+        frame = pd.DataFrame.from_records(list(records))
+        for c in cols:
+            if c not in frame:
+                frame[c] = None
+        return cls(frame[cols].reset_index(drop=True), tuple(params), tuple(outputs), **kwargs)
+
     # ---------------------------------------------------------------------------------------
     def to_frame(self) -> pd.DataFrame:
         return self.frame.copy()

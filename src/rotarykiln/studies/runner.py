@@ -1,9 +1,14 @@
-"""Run a user function on every case of a sweep, in parallel local processes or on Dask.
+"""Run a user function on every case of a study: local processes or a Dask cluster, persistently.
 
-The function takes a case (a nested dict, the base case with the swept fields set) and returns a
-dict of scalar outputs. It can be any picklable callable, e.g. the kiln model wrapped as
-``lambda``-free module-level function. An exception or a bad return value in one case is recorded
-in that case's row (column ``error``) and the sweep goes on.
+The function takes a case (a nested dict, the base case with the design's fields set) and returns
+a dict of scalar outputs; any picklable (module-level) callable will do. An exception or a bad
+return value in one case is recorded in that case's row (column ``error``) and the study goes
+on: no case is ever dropped.
+
+With ``store=FOLDER`` the rows are appended to a Parquet dataset as they arrive
+(:class:`~rotarykiln.studies.store.ResultStore`), keyed by a hash of the case: a study run again
+on the same folder runs only the cases not yet stored (an interrupted sweep resumes). A progress
+bar (tqdm, on stderr) shows done / failed / remaining and the rate.
 """
 
 from __future__ import annotations
@@ -12,20 +17,27 @@ import math
 import numbers
 import os
 import pickle
+import signal
+import sys
 import time
 import traceback
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from typing import Any
 
-from rotarykiln.errors import InputError
-from rotarykiln.studies.design import CaseSpec
-from rotarykiln.studies.paths import with_values
-from rotarykiln.studies.result import SweepResult
+import numpy as np
 
-__all__ = ["run_sweep", "run_case", "EXECUTORS"]
+from rotarykiln.errors import InputError
+from rotarykiln.studies.design import CaseSpec, si_value
+from rotarykiln.studies.paths import get_path, with_values
+from rotarykiln.studies.result import SI_SUFFIX, SweepResult
+from rotarykiln.studies.store import FIXED_COLUMNS, ResultStore, case_hash
+
+__all__ = ["run_sweep", "run_case", "EXECUTORS", "model_id", "dask_client"]
 
 EXECUTORS = ("process", "serial", "dask")
+_LOCAL_SCHEDULERS = ("synchronous", "threads", "processes", "single-threaded", "sync")
 
 
 def _scalar(v: Any) -> bool:
@@ -63,7 +75,7 @@ def run_case(func: Callable, base: Mapping, spec: CaseSpec, create: bool = False
     except Exception as exc:  # recorded per case, the sweep goes on
         tb = traceback.extract_tb(exc.__traceback__)
         where = f" ({tb[-1].name}:{tb[-1].lineno})" if tb else ""
-        row["error"] = f"{type(exc).__name__}: {exc}{where}"
+        row["error"] = f"{type(exc).__name__}: {exc}{where}".replace("\n", " ")
     row["elapsed_s"] = time.perf_counter() - t0
     return row
 
@@ -72,33 +84,223 @@ def _run_chunk(func, base, specs, create):
     return [run_case(func, base, s, create) for s in specs]
 
 
-def _chunks(seq: Sequence, n: int) -> list[list]:
-    size = max(1, math.ceil(len(seq) / n))
+def _failed_rows(specs, message: str) -> list[dict]:
+    return [
+        {
+            "case_id": c.case_id,
+            "group": c.group,
+            "outputs": {},
+            "error": message,
+            "elapsed_s": float("nan"),
+        }
+        for c in specs
+    ]
+
+
+def _chunks(seq: Sequence, size: int) -> list[list]:
     return [list(seq[i : i + size]) for i in range(0, len(seq), size)]
 
 
-def _dask_compute(tasks, scheduler):
-    import dask
+def model_id(func: Callable) -> str:
+    """``module:qualname`` of a model function (part of every case hash)."""
+    mod = getattr(func, "__module__", "") or ""
+    name = getattr(func, "__qualname__", None) or getattr(func, "__name__", None) or repr(func)
+    return f"{mod}:{name}"
 
+
+# --- executors: each yields worker rows as they arrive ------------------------------------------
+def _ignore_sigint() -> None:  # workers leave Ctrl-C to the parent, which saves and stops them
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _serial_rows(func, base, chunks, create) -> Iterator[dict]:
+    for ch in chunks:
+        yield from _run_chunk(func, base, ch, create)
+
+
+def _process_rows(func, base, chunks, create, workers, max_retries=2) -> Iterator[dict]:
+    pending = [(ch, 0) for ch in chunks]
+    while pending:
+        pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+        try:
+            futures = {
+                pool.submit(_run_chunk, func, base, ch, create): (ch, a) for ch, a in pending
+            }
+            pending = []
+            for fut in as_completed(futures):
+                ch, attempts = futures[fut]
+                try:
+                    rows = fut.result()
+                except BrokenProcessPool as exc:  # a worker died (killed, out of memory...)
+                    if attempts < max_retries:
+                        pending.append((ch, attempts + 1))  # a new pool runs them again
+                        continue
+                    rows = _failed_rows(ch, f"worker process died: {exc}".replace("\n", " "))
+                except Exception as exc:  # e.g. an output that cannot be pickled back
+                    rows = _failed_rows(ch, f"{type(exc).__name__}: {exc}".replace("\n", " "))
+                yield from rows
+        except BaseException:
+            for p in list(getattr(pool, "_processes", {}).values()):  # stop now, not after chunks
+                p.terminate()
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise
+        pool.shutdown(wait=True)
+
+
+def dask_client(scheduler=None, workers: int | None = None, timeout: float = 10.0):
+    """A ``distributed.Client``: the given one, one at ``scheduler`` or a new LocalCluster.
+
+    Parameters
+    ----------
+    scheduler : None, str or Client
+        None: the active client if any, else a LocalCluster of ``workers`` single-threaded
+        processes; ``"tcp://host:port"``: connect; a Client: used as is.
+    workers : int, optional
+        Worker processes of the LocalCluster (default: CPUs).
+    timeout : float
+        Seconds to wait for a scheduler address, s.
+
+    Returns
+    -------
+    tuple
+        ``(client, owned)``: ``owned`` is True when the caller must close the client (and its
+        cluster).
+    """
+    try:
+        from distributed import Client, LocalCluster, get_client
+    except ImportError:
+        raise InputError(
+            "sweep.executor", "dask", "available: pip install 'dask[distributed]'"
+        ) from None
     if scheduler is None:
         try:
-            from distributed import get_client  # a running cluster client, if any
+            return get_client(), False
+        except ValueError:
+            import logging
 
-            return dask.compute(*tasks, scheduler=get_client())
-        except (ImportError, ValueError):
-            return dask.compute(*tasks, scheduler="processes")
-    if isinstance(scheduler, str) and scheduler.startswith(("tcp://", "tls://", "inproc://")):
+            cluster = LocalCluster(
+                n_workers=max(1, workers or os.cpu_count() or 1),
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=None,
+                silence_logs=logging.ERROR,
+            )
+            return Client(cluster), True
+    if isinstance(scheduler, str):
         try:
-            from distributed import Client
-        except ImportError:
+            return Client(scheduler, timeout=f"{timeout}s"), True
+        except (OSError, TimeoutError, ValueError) as exc:
+            reason = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
             raise InputError(
-                "sweep.dask_scheduler",
-                scheduler,
-                "a local scheduler name (dask.distributed is not installed)",
+                "--scheduler", scheduler, f"a reachable Dask scheduler ({reason[:120]})"
             ) from None
-        with Client(scheduler) as client:
-            return dask.compute(*tasks, scheduler=client)
-    return dask.compute(*tasks, scheduler=scheduler)
+    return scheduler, False
+
+
+def _dask_rows(func, base, chunks, create, scheduler, workers, timeout) -> Iterator[dict]:
+    if isinstance(scheduler, str) and scheduler in _LOCAL_SCHEDULERS:  # dask.compute, no cluster
+        import dask
+
+        tasks = [dask.delayed(_run_chunk)(func, base, ch, create) for ch in chunks]
+        for rows in dask.compute(*tasks, scheduler=scheduler):
+            yield from rows
+        return
+    from distributed import as_completed as dask_as_completed
+
+    client, owned = dask_client(scheduler, workers, timeout)
+    futures = []
+    try:
+        base_f = client.scatter(base, broadcast=True)
+        futures = [
+            client.submit(_run_chunk, func, base_f, ch, create, pure=False, retries=2)
+            for ch in chunks
+        ]
+        specs = {f.key: ch for f, ch in zip(futures, chunks, strict=True)}
+        for fut in dask_as_completed(futures):
+            try:
+                rows = fut.result()
+            except Exception as exc:  # KilledWorker after repeated worker deaths, ...
+                rows = _failed_rows(
+                    specs[fut.key], f"{type(exc).__name__}: {exc}".replace("\n", " ")
+                )
+            fut.release()
+            yield from rows
+    finally:
+        if futures:
+            client.cancel([f for f in futures if not f.done()])
+        if owned:
+            cluster = getattr(client, "cluster", None)
+            client.close()
+            if cluster is not None:
+                cluster.close()
+
+
+# --- progress ---------------------------------------------------------------------------------
+class _Progress:
+    def __init__(self, total: int, done: int, failed: int, enabled: bool | None, desc: str):
+        if enabled is None:
+            enabled = sys.stderr.isatty()
+        self.bar = None
+        self.failed = failed
+        self.total = total
+        self.done = done
+        if enabled:
+            from tqdm import tqdm
+
+            self.bar = tqdm(
+                total=total, initial=done, desc=desc, unit="case", file=sys.stderr, mininterval=0.2
+            )
+            self._postfix()
+
+    def _postfix(self):
+        self.bar.set_postfix(failed=self.failed, remaining=self.total - self.done, refresh=False)
+
+    def update(self, failed: bool):
+        self.done += 1
+        self.failed += bool(failed)
+        if self.bar is not None:
+            self._postfix()
+            self.bar.update(1)
+
+    def close(self):
+        if self.bar is not None:
+            self._postfix()
+            self.bar.refresh()
+            self.bar.close()
+
+
+# --- records ----------------------------------------------------------------------------------
+def _base_values(base: Mapping, params: Sequence[str]) -> dict:
+    out = {}
+    for p in params:
+        try:
+            out[p] = get_path(base, p)
+        except InputError:  # a path created by the sweep
+            out[p] = None
+    return out
+
+
+def _record(row: dict, spec: CaseSpec, h: str, base_values: Mapping) -> dict:
+    rec = {"hash": h, "case_id": spec.case_id, "group": spec.group}
+    for p, bv in base_values.items():
+        v = spec.values.get(p, bv)
+        rec[p] = v
+        rec[p + SI_SUFFIX] = si_value(v) if v is not None else np.nan
+    outs = row["outputs"]
+    rec.update(outs)
+    rec["error"] = row["error"]
+    rec["elapsed_s"] = row["elapsed_s"]
+    rec["output_names"] = ",".join(outs)
+    return rec
+
+
+def _check_names(outputs, params):
+    reserved = set(FIXED_COLUMNS) | set(params) | {p + SI_SUFFIX for p in params}
+    clash = [o for o in outputs if o in reserved]
+    if clash:
+        raise InputError(
+            "sweep.outputs", clash[0], "an output name distinct from parameters and columns"
+        )
 
 
 def run_sweep(
@@ -109,40 +311,64 @@ def run_sweep(
     executor: str = "process",
     max_workers: int | None = None,
     chunks_per_worker: int = 4,
+    chunk_size: int | None = None,
     dask_scheduler: Any = None,
     create: bool = False,
+    store=None,
+    progress: bool | None = False,
+    flush_every: int = 200,
+    flush_seconds: float = 2.0,
+    callback: Callable[[int, int, int], None] | None = None,
+    dask_timeout: float = 10.0,
 ) -> SweepResult:
-    """Run ``func`` on every case of a design and gather one table.
+    """Run ``func`` on every case of a design and gather one table (optionally persisted).
 
     Parameters
     ----------
     func : callable
         ``func(case: dict) -> dict`` of scalar outputs. Must be picklable (a module-level function)
-        for ``executor="process"`` and ``"dask"`` with a process scheduler.
+        for ``executor="process"`` and ``"dask"``.
     base_case : mapping
         The nested case the design modifies (field values as in a case file).
     cases : sequence of CaseSpec
-        From :func:`~rotarykiln.studies.design.grid` or :func:`one_at_a_time`.
+        From :mod:`rotarykiln.studies.design` (grid, one-at-a-time, Latin hypercube, Sobol...).
     executor : {"process", "serial", "dask"}
-        ``process``: concurrent.futures.ProcessPoolExecutor on this machine (default);
-        ``serial``: in this process (debugging, unpicklable functions); ``dask``:
-        dask.delayed + dask.compute on ``dask_scheduler``.
+        ``process``: concurrent.futures.ProcessPoolExecutor on this machine (default; a worker
+        that dies is replaced and its chunk run again, twice at most); ``serial``: in this
+        process; ``dask``: a dask.distributed cluster (see ``dask_scheduler``).
     max_workers : int, optional
-        Processes (default: the number of CPUs, at most the number of cases).
+        Processes (default: the number of CPUs, at most the number of chunks); the workers of
+        a LocalCluster.
     chunks_per_worker : int
-        Cases are sent in chunks (fewer round trips for cheap functions).
+        With ``chunk_size`` None: cases per chunk = cases / (workers * chunks_per_worker), at
+        most 32 (a chunk is the unit of work sent to a worker).
+    chunk_size : int, optional
+        Cases per chunk.
     dask_scheduler : None, str or Client
-        None: the active dask.distributed client if one exists, else the local "processes"
-        scheduler; "threads", "processes", "synchronous"; a "tcp://host:port" address or a
-        Client.
+        None: the active dask.distributed client if one exists, else a LocalCluster of
+        ``max_workers`` processes; a ``"tcp://host:port"`` address (an unreachable one is an
+        InputError); a Client; or a local dask scheduler name ("synchronous", "threads",
+        "processes": dask.compute, no streaming).
     create : bool
         Allow paths absent from the base case.
+    store : path, optional
+        Parquet dataset folder: rows are appended as they arrive and cases already stored (same
+        case hash) are not run again. Without it the rows stay in memory.
+    progress : bool or None
+        Progress bar on stderr (None: when stderr is a terminal).
+    flush_every, flush_seconds : int, float
+        Write a part after this many new rows or seconds (s), whichever first.
+    callback : callable, optional
+        ``callback(done, failed, total)`` after each row (in the calling process).
+    dask_timeout : float
+        Seconds to wait for a scheduler address, s.
 
     Returns
     -------
     SweepResult
         One row per case: ``case_id``, ``group``, each swept path (value as given) and its SI
-        value, the outputs, ``error`` and ``elapsed_s``.
+        value, the outputs, ``error``, ``elapsed_s`` and ``hash``; ``meta["ran"]`` and
+        ``meta["reused"]`` count the cases run now and those taken from the store.
 
     Examples
     --------
@@ -165,54 +391,119 @@ def run_sweep(
     if len(set(ids)) != len(ids):
         raise InputError("sweep.cases", "duplicate case ids", "unique case ids")
     # validate every path once, up front (a typo should not cost a whole sweep)
+    checked: set = set()
     for c in cases:
-        with_values(base_case, c.values, create=create)
-    t0 = time.perf_counter()
-    if executor == "serial":
-        rows = [run_case(func, base_case, c, create) for c in cases]
-    elif executor == "process":
+        key = tuple(sorted(c.values))
+        if key not in checked:
+            checked.add(key)
+            with_values(base_case, c.values, create=create)
+    if executor != "serial" and not (
+        executor == "dask" and dask_scheduler in ("synchronous", "threads", "sync")
+    ):
         try:
             pickle.dumps(func)
         except Exception:
             raise InputError(
                 "sweep.function",
                 getattr(func, "__name__", repr(func)),
-                "picklable (a module-level function) for executor='process'; use executor='serial'",
+                f"picklable (a module-level function) for executor={executor!r}; "
+                "use executor='serial'",
             ) from None
-        workers = max(1, min(max_workers or os.cpu_count() or 1, len(cases)))
-        rows = []
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            futures = {
-                pool.submit(_run_chunk, func, base_case, ch, create): ch
-                for ch in _chunks(cases, workers * max(1, chunks_per_worker))
-            }
-            for fut in as_completed(futures):
-                try:
-                    rows.extend(fut.result())
-                except Exception as exc:  # a worker died: record it for each case of the chunk
-                    for c in futures[fut]:
-                        rows.append(
-                            {
-                                "case_id": c.case_id,
-                                "group": c.group,
-                                "outputs": {},
-                                "error": f"{type(exc).__name__}: {exc}",
-                                "elapsed_s": float("nan"),
-                            }
-                        )
-    else:
-        try:
-            import dask
-        except ImportError:
-            raise InputError(
-                "sweep.executor", "dask", "available (dask is not installed)"
-            ) from None
-        tasks = [
-            dask.delayed(_run_chunk)(func, base_case, ch, create)
-            for ch in _chunks(
-                cases, (max_workers or os.cpu_count() or 1) * max(1, chunks_per_worker)
+    params: list[str] = []
+    for c in cases:
+        for p in c.values:
+            if p not in params:
+                params.append(p)
+    base_values = _base_values(base_case, params)
+    digest = ResultStore.digest(base_case)
+    mid = model_id(func)
+    hashes = {c.case_id: case_hash(digest, c.values, mid) for c in cases}
+
+    st = ResultStore(store) if store is not None else None
+    stored = st.hashes() if st is not None else set()
+    todo = [c for c in cases if hashes[c.case_id] not in stored]
+    # identical cases in one design run once
+    seen: set = set()
+    unique = []
+    for c in todo:
+        if hashes[c.case_id] not in seen:
+            seen.add(hashes[c.case_id])
+            unique.append(c)
+    reused = len(cases) - len(todo)
+
+    workers = max(1, max_workers or os.cpu_count() or 1)
+    size = chunk_size or max(
+        1, min(32, math.ceil(len(unique) / (workers * max(1, chunks_per_worker))))
+    )
+    chunks = _chunks(unique, size)
+    if executor == "process":
+        workers = min(workers, max(1, len(chunks)))
+    by_id = {c.case_id: c for c in cases}
+
+    t0 = time.perf_counter()
+    records: dict[str, dict] = {}
+    buffer: list[dict] = []
+    last_flush = time.monotonic()
+    failed_before = 0
+    bar = _Progress(len(cases), reused, failed_before, progress, "sweep")
+    try:
+        if not unique:
+            rows: Iterator[dict] = iter(())
+        elif executor == "serial":
+            rows = _serial_rows(func, base_case, chunks, create)
+        elif executor == "process":
+            rows = _process_rows(func, base_case, chunks, create, workers)
+        else:
+            rows = _dask_rows(
+                func, base_case, chunks, create, dask_scheduler, max_workers, dask_timeout
             )
-        ]
-        rows = [r for chunk in _dask_compute(tasks, dask_scheduler) for r in chunk]
+        for row in rows:
+            spec = by_id[row["case_id"]]
+            _check_names(row["outputs"], params)
+            rec = _record(row, spec, hashes[spec.case_id], base_values)
+            records[rec["hash"]] = rec
+            bar.update(rec["error"] != "")
+            if st is not None:
+                buffer.append(rec)
+                if len(buffer) >= flush_every or time.monotonic() - last_flush > flush_seconds:
+                    st.append(buffer)
+                    buffer = []
+                    last_flush = time.monotonic()
+            if callback is not None:
+                callback(bar.done, bar.failed, len(cases))
+    finally:
+        if st is not None and buffer:
+            st.append(buffer)  # what has arrived is kept, also on Ctrl-C
+        bar.close()
     wall = time.perf_counter() - t0
-    return SweepResult.from_rows(rows, cases, wall_time=wall, executor=executor, base=base_case)
+
+    if st is not None and reused:
+        old = st.read()
+        old = old[old["hash"].isin(set(hashes.values()) - set(records))]
+        for rec in old.drop_duplicates("hash", keep="last").to_dict(orient="records"):
+            names = [n for n in str(rec.get("output_names") or "").split(",") if n]
+            row = {
+                "outputs": {n: rec.get(n) for n in names},
+                "error": rec.get("error") or "",
+                "elapsed_s": rec.get("elapsed_s", float("nan")),
+            }
+            records[rec["hash"]] = row
+    frame_rows = []
+    for c in sorted(cases, key=lambda c: c.case_id):
+        r = records[hashes[c.case_id]]
+        row = {
+            "outputs": {n: r[n] for n in r["output_names"].split(",") if n}
+            if "output_names" in r
+            else r["outputs"],
+            "error": r["error"],
+            "elapsed_s": r["elapsed_s"],
+        }
+        frame_rows.append(_record(row, by_id[c.case_id], hashes[c.case_id], base_values))
+    res = SweepResult.from_records(
+        frame_rows,
+        params,
+        wall_time=wall,
+        executor=executor,
+        meta={"ran": len(unique), "reused": reused},
+    )
+    return res
