@@ -64,7 +64,7 @@ class PiecewisePolynomials:
     shape ``(order + 1, len(x) - 1) + trailing`` (highest power first, local variable
     ``T - x[i]``); the trailing axes stack several polynomials (e.g. one per species).
     :meth:`interval` locates the pieces (the interval ``x[i] <= T < x[i+1]``, the last one
-    closed, as ``PPoly``); :meth:`evaluate` does Horner's rule on them. ``T`` must lie in
+    closed, as ``PPoly``, to round-off); :meth:`evaluate` does Horner's rule on them. ``T`` must lie in
     ``[x[0], x[-1]]`` (the tables clamp it).
 
     Examples
@@ -99,14 +99,13 @@ class PiecewisePolynomials:
             i = np.searchsorted(self.x, T, side="right") - 1
             np.clip(i, 0, self._last, out=i)
         else:
-            # uniform grid: index arithmetic (NaN to piece 0, where it stays NaN), then the
-            # rare rounded-up index moved back so that x[i] <= T exactly, as a search gives
+            # uniform grid: index arithmetic (NaN to piece 0, where it stays NaN); a T within
+            # round-off below a breakpoint may get the next piece, at s ~ -1e-13 K: the same
+            # value to round-off (the pieces join with continuous derivatives)
             u = (T - self.x[0]) / self._step
             np.fmax(u, 0.0, out=u)
             np.minimum(u, self._last, out=u)
             i = u.astype(np.intp)
-            i -= T < self.x[i]
-            np.maximum(i, 0, out=i)
         return i, T - self.x[i]
 
     def evaluate(self, i, s):
