@@ -9,6 +9,8 @@ adapts them to the cell state. Laws and the extra inputs they read:
 =========================  ===========================================  ========================
 law                        model                                        cell inputs needed
 =========================  ===========================================  ========================
+boiling_drying             seed 004 below T_boil + boiling heat sink    drying_conductance W/mK
+                           (default: reaction ``drying``)               (bed_outlet_temperature)
 ahmad_drying               critical-moisture drying (seed 004)          drying_conductance W/mK
 heat_limited_drying        all bed heat evaporates at T_boil            bed_heat_input W/m
 luisser_calcination        Luisser rate (seed 004), no equilibrium      bed_mass_flow_in
@@ -31,7 +33,9 @@ from rotarykiln.chemistry.calcination import R_GAS, calcination_rate_with_equili
 from rotarykiln.chemistry.drying import (
     LATENT_HEAT_AHMAD,
     ahmad_critical_moisture_drying_rate,
+    boiling_drying_rate,
     heat_limited_drying_rate,
+    water_boiling_temperature,
 )
 from rotarykiln.chemistry.pyrolysis import _R_KCAL, WEN_YEN_PARAMETERS
 from rotarykiln.errors import InputError
@@ -152,6 +156,8 @@ class RateLaw:
         for k in ("A", "K_e", "latent_heat", "critical_moisture"):
             if k in params and params[k] is not None and params[k] <= 0:
                 raise InputError(f"{where}.{k}", params[k], "> 0")
+        if self.name == "boiling_drying":
+            _check_boiling_params(params, given, where)
         if self.name == "wen_yen":
             step = params["step"]
             if step not in (1.0, 2.0, 3.0, 4.0, 5.0):
@@ -205,6 +211,72 @@ def _ahmad_drying(ctx, basis, p):
             p["critical_moisture"],
             p["latent_heat"],
             p["cap"],
+        ),
+        dtype=float,
+    ) * np.ones(ctx.n)
+
+
+def _check_boiling_params(params: dict, given: Mapping, where: str) -> None:
+    """``boiling_drying``: positive stiffness, width and pressure; T_boil or pressure, not both.
+
+    Resolves ``T_boil`` (K) from the pressure when it is not given (once, at load).
+    """
+    for k in ("k_boil", "width", "pressure"):
+        if params[k] <= 0:
+            raise InputError(f"{where}.{k}", params[k], "> 0")
+    if params["T_boil"] is not None:
+        if params["T_boil"] <= 0:
+            raise InputError(f"{where}.T_boil", params["T_boil"], "> 0 K")
+        if "pressure" in given:
+            raise InputError(
+                f"{where}.pressure",
+                given["pressure"],
+                "absent when T_boil is given (T_boil follows from the pressure otherwise)",
+            )
+    else:
+        params["T_boil"] = water_boiling_temperature(params["pressure"], params["latent_heat"])
+
+
+@register_rate_law(
+    "boiling_drying",
+    {
+        "critical_moisture": 0.1,
+        "latent_heat": LATENT_HEAT_AHMAD,
+        "cap": True,
+        "below_boiling": True,
+        "T_boil": None,
+        "pressure": 101325.0,
+        "k_boil": 1.0e3,
+        "width": 0.25,
+    },
+    "seed-004 drying below the boiling point; at it the bed is held and its heat evaporates",
+)
+def _boiling_drying(ctx, basis, p):
+    # T_boil given, or resolved from the pressure at load (Clausius-Clapeyron; 373.15 K at 1 atm)
+    t_boil = p["T_boil"]
+    if t_boil is None:  # a caller that bypassed validate_params
+        t_boil = water_boiling_temperature(p["pressure"], p["latent_heat"])
+    if p["below_boiling"]:
+        conductance = ctx.input("drying_conductance", "boiling_drying")
+    else:
+        conductance = np.zeros(ctx.n)
+    return np.asarray(
+        boiling_drying_rate(
+            conductance,
+            ctx.T_gas,
+            ctx.T_bed,
+            ctx.flow(basis),
+            ctx.dry_flow(),
+            ctx.holdup(basis),
+            p["critical_moisture"],
+            p["latent_heat"],
+            p["cap"],
+            t_boil,
+            p["k_boil"],
+            p["width"],
+            p["below_boiling"],
+            # where the moisture leaves the cell, when the solver gives it (optional input)
+            T_bed_out=ctx.state.inputs.get("bed_outlet_temperature"),
         ),
         dtype=float,
     ) * np.ones(ctx.n)
