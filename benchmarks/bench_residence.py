@@ -17,7 +17,7 @@ import rotarykiln.kiln.residence as residence
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln.reacting import reacting_kiln_from_case
-from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.kiln.solve import solve_kiln
 
 
 @pytest.fixture(scope="module", params=["limestone_calcination", "charcoal_activation"])
@@ -25,7 +25,7 @@ def solved(request):
     data = yaml.safe_load(builtin_case_path(request.param).read_text(encoding="utf-8"))
     case = parse_case(data)
     kiln, cells = reacting_kiln_from_case(case)
-    sol = solve_reacting(kiln, cells)
+    sol = solve_kiln(kiln, cells)
     seen = {}
     real = residence.kiln_segregated_conversion
 

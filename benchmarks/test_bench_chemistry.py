@@ -25,7 +25,12 @@ def state():
         rng.uniform(5.0, 50.0, N),
         partial_pressure={"CO2": rng.uniform(0, 1e5, N), "H2O": rng.uniform(0, 1e5, N)},
         bed_mass_flow_in={"CaCO3": 1e-3, "kerogen": 1e-3},
-        inputs={"steam_mass_flow": 5e-3, "drying_conductance": 30.0, "bed_heat_input": 1e4},
+        inputs={
+            "steam_mass_flow": 5e-3,
+            "drying_conductance": 30.0,
+            "bed_heat_input": 1e4,
+            "freeboard_area": 0.1,
+        },
     )
 
 

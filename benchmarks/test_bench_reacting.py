@@ -10,7 +10,7 @@ import yaml
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln.reacting import reacting_kiln_from_case, reacting_sweep_model
-from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.studies import grid, run_sweep
 
 
@@ -20,22 +20,22 @@ def _data(name):
 
 def test_bench_reacting_solve_limestone_100_cells(benchmark):
     kiln, _ = reacting_kiln_from_case(parse_case(_data("limestone_calcination")))
-    solve_reacting(kiln, 100)  # gas tables (Cantera) built once, outside the timing
-    sol = benchmark(solve_reacting, kiln, 100)
+    solve_kiln(kiln, 100)  # gas tables (Cantera) built once, outside the timing
+    sol = benchmark(solve_kiln, kiln, 100)
     assert sol.conversion("CaCO3")[-1] > 0.999
 
 
 def test_bench_reacting_solve_charcoal_100_cells(benchmark):
     kiln, _ = reacting_kiln_from_case(parse_case(_data("charcoal_activation")))
-    solve_reacting(kiln, 100)
-    sol = benchmark(solve_reacting, kiln, 100)
+    solve_kiln(kiln, 100)
+    sol = benchmark(solve_kiln, kiln, 100)
     assert sol.burn_off > 0
 
 
 @pytest.fixture(scope="module")
 def limestone_fired():
     kiln, _ = reacting_kiln_from_case(parse_case(_data("limestone_fired")))
-    solve_reacting(kiln, 100)  # gas tables (Cantera) built once, outside the timing
+    solve_kiln(kiln, 100)  # gas tables (Cantera) built once, outside the timing
     return kiln
 
 
@@ -45,11 +45,11 @@ def _check_fired(sol):
 
 
 def test_bench_reacting_solve_fired_100_cells(benchmark, limestone_fired):
-    _check_fired(benchmark(solve_reacting, limestone_fired, 100))
+    _check_fired(benchmark(solve_kiln, limestone_fired, 100))
 
 
 def test_bench_reacting_solve_fired_1600_cells(benchmark, limestone_fired):
-    sol = benchmark.pedantic(solve_reacting, args=(limestone_fired, 1600), rounds=5, iterations=1)
+    sol = benchmark.pedantic(solve_kiln, args=(limestone_fired, 1600), rounds=5, iterations=1)
     _check_fired(sol)
 
 

@@ -16,7 +16,7 @@ import numpy as np  # noqa: E402
 
 from rotarykiln.case import load_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
-from rotarykiln.kiln import solve_heat  # noqa: E402
+from rotarykiln.kiln import solve_kiln  # noqa: E402
 from rotarykiln.kiln.run import heat_kiln_from_case  # noqa: E402
 from rotarykiln.kiln.tscheng import (  # noqa: E402
     Z_GAS_BED,
@@ -32,7 +32,7 @@ warnings.simplefilter("ignore")
 def main():
     OUT.mkdir(parents=True, exist_ok=True)
     # 1. one run with its measurements
-    sol = solve_heat(tscheng_kiln("A16"))
+    sol = solve_kiln(tscheng_kiln("A16"))
     ax = sol.plot()
     ax.axvspan(1.25, 1.78, color="0.9", zorder=0)
     ax.figure.savefig(OUT / "heat_tscheng_A16.png", dpi=90, bbox_inches="tight")
@@ -43,7 +43,7 @@ def main():
     rows = []
     win = (Z_GAS_BED >= 1.25) & (Z_GAS_BED <= 1.78)
     for run in load_tscheng_runs().index:
-        s = solve_heat(tscheng_kiln(run))
+        s = solve_kiln(tscheng_kiln(run))
         m = s.measurements
         sc = score_run(run, s)
         rows.append(sc)
@@ -66,8 +66,8 @@ def main():
 
     # 3. flame case, radiation on and off
     kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("heat/ubc_pilot_flame")))
-    on = solve_heat(kiln, cells)
-    off = solve_heat(replace(kiln, closures=replace(kiln.closures, radiation=False)), cells)
+    on = solve_kiln(kiln, cells)
+    off = solve_kiln(replace(kiln, closures=replace(kiln.closures, radiation=False)), cells)
     fig, ax = plt.subplots(figsize=(7, 4.2))
     for sol_, ls, lab in ((on, "-", "radiation on"), (off, "--", "radiation off")):
         ax.plot(sol_.z_nodes, sol_.t_gas_nodes, ls, color="tab:red", label=f"gas, {lab}")

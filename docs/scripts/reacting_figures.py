@@ -15,8 +15,8 @@ import yaml  # noqa: E402
 from rotarykiln.case import parse_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
 from rotarykiln.kiln.reacting import reacting_kiln_from_case  # noqa: E402
-from rotarykiln.kiln.reacting_solve import solve_reacting  # noqa: E402
 from rotarykiln.kiln.residence import residence_time_effects  # noqa: E402
+from rotarykiln.kiln.solve import solve_kiln  # noqa: E402
 from rotarykiln.outputs import write_frame_atomic  # noqa: E402
 from rotarykiln.studies.ahmad2006 import chapter5_directions, run_chapter5  # noqa: E402
 
@@ -31,7 +31,7 @@ def _data(name):
 def solve(data):
     case = parse_case(data)
     kiln, cells = reacting_kiln_from_case(case)
-    return case, kiln, solve_reacting(kiln, cells)
+    return case, kiln, solve_kiln(kiln, cells)
 
 
 for name in ("charcoal_activation", "limestone_calcination"):

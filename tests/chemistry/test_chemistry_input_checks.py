@@ -54,9 +54,15 @@ def test_segregated_average_rejects_a_non_integer_grid():
         )
 
 
-def test_empty_mechanism_is_refused():
-    from rotarykiln.chemistry.mechanism import Mechanism
-    from rotarykiln.errors import InputError
+def test_empty_mechanism_is_an_inert_one():
+    # an inert kiln is a kiln without reactions: the empty mechanism gives zero rates
+    from rotarykiln.chemistry.mechanism import CellState, Mechanism
 
-    with pytest.raises(InputError, match="at least one reaction"):
-        Mechanism([])
+    mech = Mechanism([])
+    out = mech.rates(
+        CellState.build(
+            T_bed=500.0, T_gas=600.0, bed_mass_flow={"inert": 1.0}, bed_mass_per_length=10.0
+        )
+    )
+    assert out.production.shape[0] == 1 and not out.production.any()
+    assert not np.any(out.heat_absorbed)

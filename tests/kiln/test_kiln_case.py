@@ -11,7 +11,7 @@ from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.run import heat_kiln_from_case, heat_runner, run_heat_case
-from rotarykiln.kiln.solve import solve_heat
+from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.kiln.tscheng import insulation_thickness, tscheng_kiln
 
 matplotlib.use("Agg")
@@ -26,7 +26,7 @@ def test_builtin_tscheng_case_equals_module_setup():
     data = _data("heat/tscheng_A16")
     assert data["heat"]["lining"][2]["thickness"] == f"{insulation_thickness() * 1000:.2f} mm"
     a = run_heat_case(parse_case(data))
-    b = solve_heat(tscheng_kiln("A16"))
+    b = solve_kiln(tscheng_kiln("A16"))
     assert np.max(np.abs(a.t_bed_nodes - b.t_bed_nodes)) < 0.05  # radius 0.1885/2 vs 0.09425
     assert a.measurements["t_bed"].tolist() == [341, 356, 374, 417, 473]
 

@@ -21,9 +21,9 @@ from rotarykiln.kiln.reacting import (
     reacting_sweep_model,
     run_reacting_case,
 )
-from rotarykiln.kiln.reacting_solve import solve_reacting
 from rotarykiln.kiln.residence import KilnRTD, residence_time_effects
 from rotarykiln.kiln.run import heat_runner
+from rotarykiln.kiln.solve import solve_kiln
 
 matplotlib.use("Agg")
 
@@ -100,8 +100,8 @@ def test_charcoal_burn_off_matches_plug_flow_through_its_own_profile(charcoal):
 def test_mesh_refinement_changes_little():
     case = parse_case(_data("limestone_calcination"))
     kiln, _ = reacting_kiln_from_case(case)
-    a = solve_reacting(kiln, 100)
-    b = solve_reacting(kiln, 200)
+    a = solve_kiln(kiln, 100)
+    b = solve_kiln(kiln, 200)
     assert abs(a.bed_outlet_temperature - b.bed_outlet_temperature) < 5.0
     assert abs(a.gas_outlet_temperature - b.gas_outlet_temperature) < 5.0
     assert abs(a.end("calcination_luisser") - b.end("calcination_luisser")) < 0.15
@@ -133,7 +133,7 @@ def test_convergence_error_names_cell_and_equation():
     case = parse_case(_data("limestone_calcination"))
     kiln, _ = reacting_kiln_from_case(case)
     with pytest.raises(ConvergenceError) as exc:
-        solve_reacting(kiln, 60, max_iter=2)
+        solve_kiln(kiln, 60, max_iter=2)
     assert "cell" in str(exc.value) and "z =" in str(exc.value)
 
 
@@ -141,7 +141,7 @@ def test_bad_cells_refused():
     case = parse_case(_data("limestone_calcination"))
     kiln, _ = reacting_kiln_from_case(case)
     with pytest.raises(InputError, match="chemistry.cells"):
-        solve_reacting(kiln, 2)
+        solve_kiln(kiln, 2)
 
 
 def test_faithful_gas_gain_refused():
@@ -254,8 +254,8 @@ def test_oil_shale_feed_with_pyrolysis_drying_and_calcination():
 def test_charcoal_mesh_refinement():
     case = parse_case(_data("charcoal_activation"))
     kiln, _ = reacting_kiln_from_case(case)
-    a = solve_reacting(kiln, 100)
-    b = solve_reacting(kiln, 200)
+    a = solve_kiln(kiln, 100)
+    b = solve_kiln(kiln, 200)
     assert abs(a.bed_outlet_temperature - b.bed_outlet_temperature) < 2.0
     assert abs(a.burn_off - b.burn_off) < 0.05 * a.burn_off
 

@@ -17,7 +17,7 @@ from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.plugflow import integrate_plug_flow
 from rotarykiln.kiln.reacting import reacting_kiln_from_case
-from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.kiln.solve import solve_kiln
 
 
 @pytest.fixture(scope="module")
@@ -25,7 +25,7 @@ def charcoal():
     data = yaml.safe_load(builtin_case_path("charcoal_activation").read_text(encoding="utf-8"))
     case = parse_case(data)
     kiln, cells = reacting_kiln_from_case(case)
-    return case, kiln, solve_reacting(kiln, cells)
+    return case, kiln, solve_kiln(kiln, cells)
 
 
 @pytest.fixture(scope="module")

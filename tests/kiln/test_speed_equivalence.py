@@ -13,10 +13,10 @@ import pytest
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln.reacting import reacting_kiln_from_case
-from rotarykiln.kiln.reacting_solve import solve_reacting
 from rotarykiln.kiln.run import heat_kiln_from_case
-from rotarykiln.kiln.solve import solve_heat
+from rotarykiln.kiln.solve import solve_kiln
 
+HEAT_UNIFIED_ATOL = 1.0  # K, see test_heat_solution_unchanged_by_the_speed_work
 T_ATOL = 1e-6  # K
 FLOW_RTOL = 1e-9  # relative to the largest flow of the stream
 
@@ -223,7 +223,7 @@ def test_reacting_solution_unchanged_by_the_speed_work(name):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path(name)))
-        sol = solve_reacting(kiln, 100)
+        sol = solve_kiln(kiln, 100)
     np.testing.assert_allclose(sol.t_bed_nodes[FACES], ref["t_bed_nodes"], rtol=0, atol=T_ATOL)
     np.testing.assert_allclose(sol.t_gas_nodes[FACES], ref["t_gas_nodes"], rtol=0, atol=T_ATOL)
     np.testing.assert_allclose(sol.t_wall[CELLS], ref["t_wall"], rtol=0, atol=T_ATOL)
@@ -239,9 +239,14 @@ def test_heat_solution_unchanged_by_the_speed_work(name):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         kiln, cells = heat_kiln_from_case(load_case(builtin_case_path(name)))
-        sol = solve_heat(kiln, cells)
-    assert sol.n_cells == 100
-    np.testing.assert_allclose(sol.t_bed_nodes[CELLS], ref["t_bed_nodes"], rtol=0, atol=T_ATOL)
-    np.testing.assert_allclose(sol.t_gas_nodes[CELLS], ref["t_gas_nodes"], rtol=0, atol=T_ATOL)
-    np.testing.assert_allclose(sol.t_wall[CELLS], ref["t_wall"], rtol=0, atol=T_ATOL)
-    np.testing.assert_allclose(sol.t_shell[CELLS], ref["t_shell"], rtol=0, atol=T_ATOL)
+        sol = solve_kiln(kiln, cells)
+    assert len(sol.z) == 100
+    # the heat cases now run through the one kiln model, which mixes its gas properties per
+    # species (mole-average conductivity, Herning-Zipperer viscosity) where the retired heat
+    # model took Cantera's mixture-averaged transport of the fixed composition: measured
+    # change 0.56 K (Barr T4, near the burner) and 0.007 K (Tscheng A16)
+    atol = HEAT_UNIFIED_ATOL
+    np.testing.assert_allclose(sol.t_bed_nodes[CELLS], ref["t_bed_nodes"], rtol=0, atol=atol)
+    np.testing.assert_allclose(sol.t_gas_nodes[CELLS], ref["t_gas_nodes"], rtol=0, atol=atol)
+    np.testing.assert_allclose(sol.t_wall[CELLS], ref["t_wall"], rtol=0, atol=atol)
+    np.testing.assert_allclose(sol.t_shell[CELLS], ref["t_shell"], rtol=0, atol=atol)

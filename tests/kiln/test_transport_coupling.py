@@ -53,7 +53,7 @@ def test_fill_follows_the_bed_profile():
 def test_coupled_solve_closes_energy(model):
     data = {**CASE, "transport": {"model": model, "dam_height": "6 cm"}}
     sol = run_heat_case(parse_case(data))
-    assert abs(sol.balance_closure) < 1e-6
+    assert abs(sol.energy_closure) < 1e-6
     assert 298 < sol.summary()["bed_outlet_temperature_K"] < 535
 
 

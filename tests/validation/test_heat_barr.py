@@ -70,7 +70,7 @@ def test_bed_rises_to_the_discharge(solutions):
 
 def test_balances_close_and_sheet_adds_up(solutions):
     for sol in solutions.values():
-        assert abs(sol.balance_closure) < 1e-6
+        assert abs(sol.energy_closure) < 1e-6
         s = sol.energy_sheet
         assert abs(s["closure_relative"]) < 1e-6
         # LHV input (Cantera) within 0.2 % of the heat the model releases (dissociation, NO)
@@ -105,5 +105,5 @@ def test_co_current_variant_converges():
         data = yaml.safe_load(builtin_case_path(f"heat/barr_{t}").read_text())
         data["heat"]["counter_current"] = False
         sol = run_heat_case(parse_case(data))
-        assert abs(sol.balance_closure) < 1e-6
+        assert abs(sol.energy_closure) < 1e-6
         assert sol.t_gas_nodes[0] == pytest.approx(sol.burner["adiabatic_temperature_K"])

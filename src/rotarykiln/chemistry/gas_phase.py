@@ -115,8 +115,8 @@ def gas_arrhenius_rate(T, concentrations: dict, A, b, E, orders: dict, c_floor=1
         Activation energy, J/mol.
     orders : dict
         Species -> reaction order, -.
-    c_floor : float
-        Concentration floor of negative orders, mol/m3.
+    c_floor : float, mol/m3
+        Concentration floor of negative orders.
 
     Returns
     -------

@@ -245,8 +245,6 @@ class Mechanism:
 
     def __post_init__(self):
         names = [r.name for r in self.reactions]
-        if not names:
-            raise InputError("mechanism.reactions", "[]", "at least one reaction")
         if len(set(names)) != len(names):
             raise InputError("mechanism.reactions", names, "unique reaction names")
         for r in self.reactions:
@@ -256,7 +254,7 @@ class Mechanism:
                 )
         object.__setattr__(self, "reactions", tuple(self.reactions))
         S = np.array([r.mass_stoichiometry for r in self.reactions]).reshape(
-            len(self.reactions), -1
+            len(self.reactions), len(self.species.names)
         )
         object.__setattr__(self, "_S", S)
         object.__setattr__(self, "_dh", np.array([r.heat for r in self.reactions]))

@@ -1,21 +1,14 @@
-"""The assembled steady kiln model: discretisation, residual, Newton solver, results.
+"""The steady kiln model: one model for every kiln (inert or reacting, air-heated or fired).
 
-Entry points: :class:`HeatKiln` (inputs), :func:`solve_heat` (solve), :class:`KilnSolution`
-(results), :func:`run_heat_case` (from a case file), :mod:`rotarykiln.kiln.tscheng` and
-:mod:`rotarykiln.kiln.builtin` (built-in validation and demonstration kilns).
+Entry points: :class:`Kiln` (inputs; :meth:`Kiln.inert` for a bed that does not react),
+:func:`solve_kiln` (Newton on the discretised balances), :class:`KilnSolution` (profiles,
+balances, summary), :func:`~rotarykiln.kiln.run.run_heat_case` and
+:func:`~rotarykiln.kiln.reacting.run_reacting_case` (from the ``heat:`` and ``chemistry:``
+sections of a case file), :mod:`rotarykiln.kiln.tscheng` (Tscheng's validation kilns).
 """
 
-from rotarykiln.kiln.model import Closures, HeatKiln
+from rotarykiln.kiln.model import Closures, Kiln
 from rotarykiln.kiln.solution import KilnSolution
-from rotarykiln.kiln.solve import solve_heat
-from rotarykiln.kiln.sources import CellState, SourceResult, SourceTerms
+from rotarykiln.kiln.solve import solve_kiln
 
-__all__ = [
-    "CellState",
-    "Closures",
-    "HeatKiln",
-    "KilnSolution",
-    "SourceResult",
-    "SourceTerms",
-    "solve_heat",
-]
+__all__ = ["Closures", "Kiln", "KilnSolution", "solve_kiln"]

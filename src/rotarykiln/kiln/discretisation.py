@@ -25,9 +25,8 @@ import numpy as np
 
 from rotarykiln.geometry import CrossSection
 from rotarykiln.heat.gas_radiation import gorog_mean_beam_length
-from rotarykiln.kiln.model import HeatKiln
 
-__all__ = ["Grid", "build_grid"]
+__all__ = ["Grid", "cell_grid"]
 
 ABSENT_LAYER_THICKNESS = 1.0e-6  # m: a layer absent on a stretch is given this thickness
 
@@ -54,19 +53,6 @@ class Grid:
     radii: np.ndarray  # (n_layers + 1, n): interface radii, inner surface first
     present: np.ndarray  # (n_layers, n) bool
     heat_release: np.ndarray  # W/m per cell (sums to the total over the kiln)
-
-
-def build_grid(kiln: HeatKiln, n_cells: int) -> Grid:
-    """Precompute the geometry of ``n_cells`` equal cells of the heat model's ``kiln``."""
-    return cell_grid(
-        kiln.length,
-        kiln.radius,
-        n_cells,
-        kiln.fill_at,
-        kiln.layers,
-        heat_release=kiln.heat_release,
-        heat_release_profile=kiln.heat_release_profile,
-    )
 
 
 def cell_grid(

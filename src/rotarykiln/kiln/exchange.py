@@ -1,7 +1,7 @@
 r"""Heat exchange across a kiln cross-section: every closure dispatched in one place.
 
 Both steady kilns (the heat model, :class:`~rotarykiln.kiln.residual.HeatResidual`, and the
-reacting model, :class:`~rotarykiln.kiln.reacting_residual.ReactingResidual`) compute the heat
+reacting model, :class:`~rotarykiln.kiln.residual.KilnResidual`) compute the heat
 flows per metre of kiln between gas, exposed wall, bed and covered wall with
 :class:`CrossSectionExchange`, given the cell-mean temperatures and a :class:`FreeboardGas`
 (the gas properties of that model: a table of fixed composition, :class:`TableGas`, or the
@@ -154,6 +154,10 @@ class BulkBed:
         """Specific heat, J/(kg K) (constant)."""
         return self.specific_heat
 
+    def phase_cp(self, T):
+        """Specific heat without latent heat, J/(kg K): the same constant."""
+        return self.specific_heat
+
 
 @dataclass(frozen=True)
 class CrossSectionExchange:
@@ -284,7 +288,7 @@ class CrossSectionExchange:
             h_gb = gorog_gas_bed_h(gas.mass_flux, check=check) * np.ones_like(tg)
         t_film = 0.5 * (tw + tb)
         kb = self.bed_conductivity_at(gas, t_film)
-        rho_c = self.bed.bulk_density * self.bed.cp(tb)
+        rho_c = self.bed.bulk_density * self.bed.phase_cp(tb)
         if c.covered_wall == "li2005":
             h_cw = li_covered_wall_h(
                 gas.conductivity(t_film),

@@ -49,6 +49,7 @@ CANTERA_NAMES = {
     "CO": "CO",
     "H2": "H2",
     "CH4": "CH4",
+    "AR": "AR",
     "volatiles": None,
 }
 

@@ -1,19 +1,26 @@
-"""Inputs of the steady kiln heat model: :class:`HeatKiln` and :class:`Closures`."""
+"""Inputs of the steady kiln model: :class:`Kiln` (SI units) and the choice of closures."""
 
 from __future__ import annotations
 
+import dataclasses
 import warnings
-from collections.abc import Callable
 from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, check_range
-from rotarykiln.materials.gas import GasPropertyTable
 from rotarykiln.materials.lining import Layer
-from rotarykiln.materials.solids import Solid
 
-__all__ = ["Closures", "HeatKiln", "GAS_WALL", "GAS_BED", "COVERED_WALL", "GAS_EMISSIVITY"]
+__all__ = [
+    "Closures",
+    "Kiln",
+    "SEED004_CLOSURES",
+    "GAS_WALL",
+    "GAS_BED",
+    "COVERED_WALL",
+    "GAS_EMISSIVITY",
+]
 
 GAS_WALL = ("tscheng1979", "gorog1982")
 GAS_BED = ("tscheng1979", "gorog1982")
@@ -76,100 +83,253 @@ class Closures:
         return cls(**{k: v for k, v in given.items() if v is not None})
 
 
-FillLike = float | np.ndarray | Callable[[np.ndarray], np.ndarray] | tuple
+#: Closures of seed 004 (Gorog et al. 1982 gas-bed and gas-wall, Tscheng & Watkinson 1979
+#: covered wall), with the 0.62 exponent of the gas-bed law (notes 004, section 8.4).
+SEED004_CLOSURES = Closures(
+    gas_wall="gorog1982",
+    gas_bed="gorog1982",
+    covered_wall="tscheng1979",
+    radiation=True,
+    gas_emissivity="johansson2011",
+    bed_conductivity="given",
+)
 
 
 @dataclass(frozen=True)
-class HeatKiln:
-    """Everything the steady heat model needs, in SI units.
+class Kiln:
+    """Everything the reacting kiln model needs (SI units).
 
-    Geometry: ``length`` (m), ``radius`` (m, inner), ``omega`` (rad/s).
-    Bed: ``fill`` (-) as a number, an array of values at evenly spaced positions from the
-    solids inlet (z = 0) to the discharge (z = length), a pair ``(z, fill)`` of arrays, or a
-    callable ``fill(z)``; ``solid`` (:class:`Solid`), ``solids_flow`` (kg/s),
-    ``solids_inlet_temperature`` (K).
-    Gas: ``gas`` (:class:`GasPropertyTable`), ``gas_flow`` (kg/s), ``gas_inlet_temperature``
-    (K), ``counter_current`` (gas enters at z = length), ``heat_release`` (W, released in the
-    gas by a flame inside the kiln) with ``heat_release_profile`` (callable of z, normalised
-    by the solver) or None for uniform; ``pressure`` (Pa).
-    Wall: ``layers`` (inner to outer, :class:`Layer`), ``wall_emissivity`` (inner surface,
-    default that of the first layer material), ``shell_emissivity`` (default that of the last
-    layer), ``ambient_temperature`` (K), ``wind_speed`` (m/s).
-    ``flame``: the :class:`~rotarykiln.kiln.flame.Flame` of a burner (its heating values and
-    jet numbers enter the energy balance sheet and the summary), or None.
-    ``closures``: :class:`Closures`. ``measurements``: optional dict of arrays
-    (``z_gas``, ``t_gas``, ``z_bed``, ``t_bed``, ``z_wall``, ``t_wall``) overlaid on plots.
+    Geometry and motion: ``length`` (m), ``radius`` (m, inner), ``omega`` (rad/s), ``fill``
+    (-, constant), ``bed_velocity`` (m/s, axial solids speed; hold-up per length of species i
+    is ``Q_i / bed_velocity``).
+    Bed: ``feed`` (bed species -> inlet mass flow, kg/s), ``feed_temperature`` (K),
+    ``bed_cp`` (bed species -> constant specific heat, J/(kg K)), ``bulk_density`` (kg/m3,
+    for the covered-wall coefficient), ``bed_conductivity`` (W/(m K)), ``bed_emissivity``,
+    ``particle_diameter`` (m).
+    Gas: ``gas_in`` (gas species -> inlet mass flow, kg/s), ``gas_inlet_temperature`` (K),
+    ``pressure`` (Pa), ``gas_emissivity_law`` (a, b, minimum) for
+    :math:`\\varepsilon_g = \\max(a + bT, \\min)` or None for the WSGG model of the closures
+    with the local CO2 and H2O partial pressures.
+    Wall: ``layers`` (inner to outer, :class:`~rotarykiln.materials.lining.Layer`): the lined
+    wall of the heat model (k(T) layers, shell loss by convection and radiation to
+    ``ambient_temperature`` with ``wind_speed`` m/s, ``shell_emissivity`` default that of the
+    last layer); without layers (the default, seed 004): a single inner-wall temperature with
+    the loss :math:`U \\pi D (T_w - T_a)`, ``wall_loss_u`` (W/(m2 K), on the inner wall).
+    ``ambient_temperature`` (K); ``wall_emissivity`` (inner surface; default that of the first
+    layer, or 0.9 without layers).
+    Chemistry: ``mechanism`` (:class:`~rotarykiln.chemistry.Mechanism`), ``steam_flow`` (kg/s,
+    seed 004's constant Q_a for the Ortiz law; None: the local gas H2O flow).
+    ``closures`` (:class:`~rotarykiln.kiln.model.Closures`), ``name``; ``counter_current``
+    (gas enters at z = length, against the solids; False: with them, at z = 0);
+    ``bed_depth``: a :class:`~rotarykiln.kiln.bed_depth.KramersBed` to solve the bed depth with
+    the balances (fill and hold-up then follow it; ``fill`` and ``bed_velocity`` only seed the
+    solve), or None for the constant ``fill``.
+    ``fill`` may also vary along the kiln (an array at evenly spaced positions from z = 0 to
+    L, a pair ``(z, fill)`` of arrays, or a callable of z; e.g. a transport model's profile
+    for a bed that does not react).
+    ``bed_solids``: bed species -> :class:`~rotarykiln.materials.solids.Solid` whose
+    temperature-dependent enthalpy (phases included) replaces the constant ``bed_cp``;
+    ``bed_material``: a Solid whose properties (cp(T), conductivity and its closures,
+    particle size, emissivity, bulk density) the cross-section exchange uses instead of the
+    constant ones above.
+    ``heat_release`` (W) released in the gas along ``heat_release_profile`` (callable of the
+    cell centres, normalised; None: uniform), e.g. a burner's burn-out;
+    ``flame``: the :class:`~rotarykiln.kiln.flame.Flame` of a burner (heating values and jet
+    numbers for the energy sheet and the summary); ``measurements``: measured profiles
+    (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots.
     """
 
     length: float
     radius: float
     omega: float
-    fill: FillLike
-    solid: Solid
-    solids_flow: float
-    solids_inlet_temperature: float
-    gas: GasPropertyTable
-    gas_flow: float
+    fill: float
+    bed_velocity: float
+    feed: dict
+    feed_temperature: float
+    bed_cp: dict
+    bulk_density: float
+    bed_conductivity: float
+    bed_emissivity: float
+    particle_diameter: float
+    gas_in: dict
     gas_inlet_temperature: float
-    layers: tuple[Layer, ...]
-    counter_current: bool = True
-    heat_release: float = 0.0
-    heat_release_profile: Callable[[np.ndarray], np.ndarray] | None = None
-    pressure: float = 101325.0
-    wall_emissivity: float | None = None
-    shell_emissivity: float | None = None
+    mechanism: Mechanism
+    wall_loss_u: float = 5.0
     ambient_temperature: float = 298.15
+    wall_emissivity: float | None = None
+    layers: tuple[Layer, ...] = ()
+    shell_emissivity: float | None = None
     wind_speed: float = 0.0
-    closures: Closures = field(default_factory=Closures)
-    measurements: dict | None = None
-    name: str = "kiln"
+    pressure: float = 101325.0
+    gas_emissivity_law: tuple[float, float, float] | None = None
+    steam_flow: float | None = None
+    closures: Closures = field(default_factory=lambda: SEED004_CLOSURES)
+    name: str = "reacting kiln"
+    counter_current: bool = True
+    bed_depth: object | None = None
+    bed_solids: dict = field(default_factory=dict)
+    bed_material: object | None = None
+    heat_release: float = 0.0
+    heat_release_profile: object | None = None
     flame: object | None = None
+    measurements: dict | None = None
 
     def __post_init__(self):
         check_positive("kiln.length", self.length, "m")
         check_positive("kiln.radius", self.radius, "m")
-        check_positive("operation.rotation_rate", self.omega, "rad/s")
-        check_positive("heat.solids_flow", self.solids_flow, "kg/s")
-        check_positive("heat.gas_flow", self.gas_flow, "kg/s")
-        check_positive("heat.solids_inlet_temperature", self.solids_inlet_temperature, "K")
-        check_positive("heat.gas_inlet_temperature", self.gas_inlet_temperature, "K")
-        check_positive("heat.ambient_temperature", self.ambient_temperature, "K")
-        check_positive("heat.pressure", self.pressure, "Pa")
+        check_positive("operation.speed", self.omega, "rad/s")
+        if isinstance(self.fill, int | float):
+            check_range("chemistry.fill", self.fill, 0.0, 0.5, closed_high=True)
         check_nonnegative("heat.heat_release", self.heat_release, "W")
-        check_nonnegative("heat.wind_speed", self.wind_speed, "m/s")
-        if not self.layers:
-            raise InputError("heat.lining", "[]", "a list of at least one layer")
+        check_positive("chemistry.bed_velocity", self.bed_velocity, "m/s")
+        check_positive("chemistry.feed.temperature", self.feed_temperature, "K")
+        check_positive("chemistry.gas.inlet_temperature", self.gas_inlet_temperature, "K")
+        check_positive("material.bulk_density", self.bulk_density, "kg/m3")
+        check_positive("chemistry.solid.thermal_conductivity", self.bed_conductivity, "W/(m K)")
+        check_range("chemistry.solid.emissivity", self.bed_emissivity, 0.0, 1.0, closed_high=True)
         for name, eps in (
-            ("heat.wall_emissivity", self.wall_emissivity),
-            ("heat.shell_emissivity", self.shell_emissivity),
+            ("chemistry.wall_emissivity", self.wall_emissivity),
+            ("chemistry.shell_emissivity", self.shell_emissivity),
         ):
             if eps is not None:
                 check_range(name, eps, 0.0, 1.0, closed_high=True)
+        check_nonnegative("chemistry.wind_speed", self.wind_speed, "m/s")
         if not isinstance(self.closures, Closures):
-            raise InputError("heat.closures", self.closures, "a Closures object")
-        if self.heat_release == 0.0 and self.gas_inlet_temperature < self.solids_inlet_temperature:
+            raise InputError("chemistry.closures", self.closures, "a Closures object")
+        if self.closures.bed_conductivity != "given" and self.bed_material is None:
+            raise InputError(
+                "chemistry.closures.bed_conductivity",
+                self.closures.bed_conductivity,
+                "given (the reacting kiln uses chemistry.solid.thermal_conductivity)",
+            )
+        check_positive("material.particle_size", self.particle_diameter, "m")
+        check_nonnegative("chemistry.wall_loss.U", self.wall_loss_u, "W/(m2 K)")
+        check_positive("chemistry.wall_loss.ambient_temperature", self.ambient_temperature, "K")
+        check_positive("chemistry.gas.pressure", self.pressure, "Pa")
+        if (
+            self.heat_release == 0.0
+            and not self.mechanism.reactions
+            and self.gas_inlet_temperature < self.feed_temperature
+        ):
             warnings.warn(
-                f"heat.gas_inlet_temperature: {self.gas_inlet_temperature:.6g} K is colder than "
-                f"the solids feed ({self.solids_inlet_temperature:.6g} K): the gas cools the bed",
+                f"gas inlet temperature {self.gas_inlet_temperature:.6g} K is colder than "
+                f"the solids feed ({self.feed_temperature:.6g} K): the gas cools the bed",
                 UserWarning,
                 stacklevel=3,
             )
+        sp = self.mechanism.species
+        for label, flows, phase in (
+            ("chemistry.feed", self.feed, "bed"),
+            ("chemistry.gas", self.gas_in, "gas"),
+        ):
+            if not flows or sum(flows.values()) <= 0:
+                raise InputError(f"{label} mass flow", flows, "> 0 kg/s in total")
+            for name, q in flows.items():
+                if name not in sp or sp[name].phase != phase:
+                    raise InputError(f"{label}.{name}", name, f"a {phase} species")
+                check_nonnegative(f"{label}.{name}", q, "kg/s")
+        for name, cp in self.bed_cp.items():
+            check_positive(f"chemistry.bed_cp.{name}", cp, "J/(kg K)")
+        if self.steam_flow is not None:
+            check_nonnegative("chemistry.gas.steam_flow", self.steam_flow, "kg/s")
+        if self.gas_emissivity_law is not None:
+            a, b, lo = self.gas_emissivity_law
+            if not (np.isfinite(a) and np.isfinite(b) and 0 <= lo < 1):
+                raise InputError(
+                    "chemistry.gas.emissivity", self.gas_emissivity_law, "finite a, b; 0 <= min < 1"
+                )
 
     @property
     def eps_wall(self) -> float:
         """Emissivity of the inner wall surface, -."""
         if self.wall_emissivity is not None:
             return self.wall_emissivity
-        return self.layers[0].material.emissivity
+        return self.layers[0].material.emissivity if self.layers else 0.9
 
     @property
     def eps_shell(self) -> float:
-        """Emissivity of the outer shell surface, -."""
+        """Emissivity of the outer shell surface (lined wall), -."""
         if self.shell_emissivity is not None:
             return self.shell_emissivity
-        return self.layers[-1].material.emissivity
+        return self.layers[-1].material.emissivity if self.layers else 0.9
 
-    def fill_at(self, z: np.ndarray) -> np.ndarray:
+    @classmethod
+    def inert(
+        cls,
+        *,
+        solid,
+        solids_flow: float,
+        solids_inlet_temperature: float,
+        gas_composition,
+        gas_flow: float,
+        gas_inlet_temperature: float,
+        closures: Closures | None = None,
+        **kw,
+    ) -> Kiln:
+        """A kiln whose bed does not react: a library solid heated (or cooled) by a gas.
+
+        ``solid`` (:class:`~rotarykiln.materials.solids.Solid`) fed at ``solids_flow`` (kg/s)
+        and ``solids_inlet_temperature`` (K) as the bed species ``inert`` with the solid's
+        h(T); the gas of ``gas_composition`` (mole fractions, e.g. ``"O2:0.21, N2:0.79"``;
+        species outside the chemistry table, such as traces of NO or OH in burnt gas, are
+        counted as N2 by mass) at ``gas_flow`` (kg/s) and ``gas_inlet_temperature`` (K); no
+        reaction. ``closures`` default to :class:`Closures` (Tscheng & Watkinson, Li 2005);
+        ``kw``: the other fields (``length``, ``radius``, ``omega``, ``fill``, ``layers``,
+        ``counter_current``, ``heat_release``, ...).
+
+        Examples
+        --------
+        >>> from rotarykiln.materials.solids import load_solid
+        >>> k = Kiln.inert(solid=load_solid("sand"), solids_flow=0.004,
+        ...     solids_inlet_temperature=298.15, gas_composition="O2:0.21, N2:0.79",
+        ...     gas_flow=0.007, gas_inlet_temperature=535.0, length=2.44, radius=0.094,
+        ...     omega=0.157, fill=0.17)
+        >>> sorted(k.gas_in), round(k.residence_time)
+        (['N2', 'O2'], 4750)
+        """
+        from rotarykiln.materials.gas import parse_composition
+
+        check_positive("heat.solids_flow", solids_flow, "kg/s")
+        check_positive("heat.gas_flow", gas_flow, "kg/s")
+        mech = Mechanism(())
+        sp = mech.species
+        mass = {}
+        for name, x in parse_composition(gas_composition):
+            key = name if name in sp.gas_names else None
+            if key is None:
+                from rotarykiln.materials.gas import molar_mass
+
+                mm = molar_mass(f"{name}:1")
+                key = "N2"
+            else:
+                mm = sp[key].molar_mass
+            mass[key] = mass.get(key, 0.0) + x * mm
+        total = sum(mass.values())
+        gas_in = {k: gas_flow * m / total for k, m in mass.items()}
+        fill = kw.pop("fill")
+        probe = cls(
+            feed={"inert": solids_flow},
+            feed_temperature=solids_inlet_temperature,
+            bed_cp={},
+            bulk_density=solid.bulk_density,
+            bed_conductivity=solid.bed_conductivity or solid.solid_conductivity,
+            bed_emissivity=solid.emissivity,
+            particle_diameter=solid.particle_diameter,
+            gas_in=gas_in,
+            gas_inlet_temperature=gas_inlet_temperature,
+            mechanism=mech,
+            bed_solids={"inert": solid},
+            bed_material=solid,
+            closures=closures or Closures(),
+            fill=fill,
+            bed_velocity=1.0,
+            **kw,
+        )
+        area = np.pi * probe.radius**2
+        velocity = solids_flow / (solid.bulk_density * probe.mean_fill * area)
+        return dataclasses.replace(probe, bed_velocity=velocity)
+
+    def fill_at(self, z) -> np.ndarray:
         """Fill fraction at positions ``z`` (m), from whichever form ``fill`` was given in."""
         z = np.asarray(z, dtype=float)
         f = self.fill
@@ -184,5 +344,25 @@ class HeatKiln:
                 out = np.full_like(z, float(arr))
             else:
                 out = np.interp(z, np.linspace(0.0, self.length, arr.size), arr)
-        check_range("heat.fill", out, 0.0, 0.5, closed_high=True)
+        check_range("fill", out, 0.0, 0.5, closed_high=True)
         return out
+
+    @property
+    def mean_fill(self) -> float:
+        """Fill averaged along the kiln, -."""
+        return float(np.mean(self.fill_at(np.linspace(0.0, self.length, 201))))
+
+    @property
+    def feed_flow(self) -> float:
+        """Total solids feed, kg/s."""
+        return float(sum(self.feed.values()))
+
+    @property
+    def gas_flow(self) -> float:
+        """Total gas inlet flow, kg/s."""
+        return float(sum(self.gas_in.values()))
+
+    @property
+    def residence_time(self) -> float:
+        """Mean solids residence time L / v, s."""
+        return self.length / self.bed_velocity

@@ -1,6 +1,6 @@
 """Run the reacting kiln from a case file (``chemistry:`` section) and from sweep dicts.
 
-:func:`reacting_kiln_from_case` builds a :class:`ReactingKiln` from a validated
+:func:`reacting_kiln_from_case` builds a :class:`Kiln` from a validated
 :class:`rotarykiln.case.Case`; :func:`run_reacting_case` solves it; :func:`reacting_runner` is the
 ``rotarykiln run`` section runner (profiles CSV, summary JSON, figures, residence-time effects);
 :func:`reacting_sweep_model` is the picklable model function for
@@ -19,10 +19,9 @@ from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
 from rotarykiln.chemistry.species import default_species
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.model import Closures
-from rotarykiln.kiln.reacting_model import SEED004_CLOSURES, ReactingKiln
-from rotarykiln.kiln.reacting_solution import ReactingSolution
-from rotarykiln.kiln.reacting_solve import solve_reacting
+from rotarykiln.kiln.model import SEED004_CLOSURES, Closures, Kiln
+from rotarykiln.kiln.solution import KilnSolution
+from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.kiln.wall import layers_from_case
 
 __all__ = [
@@ -62,8 +61,8 @@ def _library_solid(name: str):
         return None
 
 
-def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
-    """The :class:`ReactingKiln` and cell count of a case with a ``chemistry`` section."""
+def reacting_kiln_from_case(case) -> tuple[Kiln, int]:
+    """The :class:`Kiln` and cell count of a case with a ``chemistry`` section."""
     ch = case.chemistry
     if ch is None:
         raise InputError("chemistry", None, "present (the case has no chemistry: section)")
@@ -133,7 +132,7 @@ def reacting_kiln_from_case(case) -> tuple[ReactingKiln, int]:
         law = (g.emissivity_a, g.emissivity_b_per_K or 0.0, g.emissivity_minimum or 0.0)
     closures = SEED004_CLOSURES if ch.closures is None else Closures.from_case(ch.closures)
     wall = _wall_from_case(ch)
-    kiln = ReactingKiln(
+    kiln = Kiln(
         length=length,
         radius=radius,
         omega=case.operation.speed,
@@ -226,7 +225,7 @@ def _burner_gas(section, kiln_section):
 
 
 def _wall_from_case(ch) -> dict:
-    """Wall inputs of :class:`ReactingKiln` from a ``chemistry`` section.
+    """Wall inputs of :class:`Kiln` from a ``chemistry`` section.
 
     ``wall: wall_u`` (the default without a ``lining``): one wall temperature, U and ambient
     from ``wall_loss`` (default 5 W/(m2 K), 298.15 K). ``wall: lining`` (the default with a
@@ -256,7 +255,7 @@ def _wall_from_case(ch) -> dict:
     return out
 
 
-def run_reacting_case(case, n_cells: int | None = None) -> ReactingSolution:
+def run_reacting_case(case, n_cells: int | None = None) -> KilnSolution:
     """Solve the reacting kiln of a validated case (with a ``chemistry:`` section).
 
     Examples
@@ -270,7 +269,7 @@ def run_reacting_case(case, n_cells: int | None = None) -> ReactingSolution:
     (True, True)
     """
     kiln, cells = reacting_kiln_from_case(case)
-    return solve_reacting(kiln, n_cells or cells)
+    return solve_kiln(kiln, n_cells or cells)
 
 
 def reacting_runner(case, out: Path) -> dict:
@@ -282,7 +281,7 @@ def reacting_runner(case, out: Path) -> dict:
     from rotarykiln.outputs import save_figure_atomic
 
     kiln, cells = reacting_kiln_from_case(case)
-    sol = solve_reacting(kiln, cells)
+    sol = solve_kiln(kiln, cells)
     out = Path(out)
     rtd = residence_time_effects(case, kiln, sol)
     summary = write_solution_files(sol, out, "reacting", extra=rtd.summary(), dpi=100)

@@ -1,123 +1,316 @@
-"""Residual of the discretised steady kiln heat balances (see :mod:`.discretisation`).
+r"""Residual of the reacting kiln: energy and species balances of every cell, one Newton system.
 
-Unknowns per cell ``j`` (last axis of ``x``): 0 ``T_bed`` at the solids-outlet face of the cell
-(face j+1); 1 ``T_gas`` at the gas-outlet face (face j when counter-current, j+1 when
-co-current); 2 inner wall surface; 3 ... 2+n_layers the lining interfaces outwards, the last
-being the outer shell surface; then the extra unknowns of a source term. Residuals are heat
-flows per cell in W (bed, gas, wall, each lining interface, shell), then the source's extra
-residuals. All functions broadcast over leading batch axes of ``x``.
+Unknowns of cell ``j`` (last axis): 0 ``T_bed`` at face j+1 (solids outlet of the cell), 1
+``T_gas`` at the cell's gas outlet (face j counter-current, face j+1 co-current), 2 the inner wall (with a lining: then each
+lining interface and the shell, :mod:`rotarykiln.kiln.wall`), then the mass flows of the
+reacting bed species at face j+1 and of the reacting gas species at the gas outlet face, each divided by the
+phase's total inlet flow (for bed reactants that are fed and never produced, the square root
+of that ratio). Species that no reaction touches keep their inlet flow.
+
+Balances of cell j (:math:`\Delta z`), with rates :math:`\dot w_i` (kg/(s m)) and heat
+absorbed :math:`\dot q_r = \sum_r r_r \Delta H_r(T_b)` (W/m) from
+:meth:`rotarykiln.chemistry.Mechanism.rates` at the cell-mean temperatures and the cell's outlet
+flows (implicit upwind: flows never turn negative):
+
+.. math::
+    Q_{i,j+1} - Q_{i,j} = \Delta z\,\dot w_i,\qquad G_{k,j} - G_{k,j+1} = \Delta z\,\dot w_k
+
+    \sum_i Q_i h_i(T_b)\Big|_j^{j+1} = \Delta z\Big(Q_{gb} + Q_{rb} + Q_{cw}
+        - \dot q_r + \sum_{i\in bed} \dot w_i h_i(\bar T_b)\Big)
+
+    \sum_k G_k h_k(T_g)\Big|_{j+1}^{j} = -\Delta z\Big(Q_{gw} + Q_{gb} + Q_{rw} + Q_{rb}
+        - \sum_{k\in gas} \dot w_k h_k(\bar T_b)\Big)
+
+    0 = Q_{gw} + Q_{rw} - Q_{cw} - U\pi D (T_w - T_a)
+
+(with a lining, the wall rows of the heat model instead: :mod:`rotarykiln.kiln.wall`).
+Freeboard (``phase: gas``) reactions (:mod:`rotarykiln.chemistry.gas_phase`) change the gas
+species at the gas temperature and release :math:`-\Delta H_{298}\,r` into the gas balance
+instead (the gas tables hold the sensible part), not into the bed. The
+exchange terms come from :class:`rotarykiln.kiln.exchange.CrossSectionExchange`, shared with
+the heat model.
+:math:`h_i` are sensible enthalpies (0 at 298.15 K): the gases the bed releases leave it at the
+bed temperature and are heated to the gas temperature inside the gas balance. Every term
+appears with the same value in the two balances it links, so the scheme is conservative:
+species (and so elements) and energy telescope to the global balances.
 """
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
-from rotarykiln.kiln.discretisation import Grid
-from rotarykiln.kiln.exchange import FLOW_KEYS, CrossSectionExchange, TableGas, cell_report
-from rotarykiln.kiln.model import HeatKiln
-from rotarykiln.kiln.sources import CellState, SourceTerms
-from rotarykiln.kiln.wall import LinedWall
+from rotarykiln.chemistry.mechanism import CellState as ChemState
+from rotarykiln.kiln.discretisation import cell_grid
+from rotarykiln.kiln.exchange import FLOW_KEYS, BulkBed, CrossSectionExchange, cell_report
+from rotarykiln.kiln.gas_mixture import GasMixture, MixtureGas
+from rotarykiln.kiln.model import Kiln
+from rotarykiln.kiln.wall import ConstantUWall, LinedWall
+from rotarykiln.materials.gas import T_REF
 
-__all__ = ["HeatResidual", "T_FLOOR"]
+__all__ = ["KilnResidual", "T_FLOOR"]
 
 T_FLOOR = 150.0  # K, temperatures are clipped here inside property evaluations
 
 
-class HeatResidual:
-    """Callable residual ``F(x)`` of a kiln on a grid, with an optional source term."""
+class KilnResidual:
+    """Callable residual ``F(x)`` of a :class:`Kiln` on ``n`` equal cells."""
 
-    def __init__(self, kiln: HeatKiln, grid: Grid, sources: SourceTerms | None = None):
-        self.kiln = kiln
-        self.grid = grid
-        self.sources = sources
-        self.n_layers = len(kiln.layers)
-        self.n_extra = int(getattr(sources, "n_extra", 0)) if sources is not None else 0
-        self.nv = 3 + self.n_layers + self.n_extra
-        self.homotopy = 1.0  # scales radiation and heat release (continuation)
-        self.exchange = CrossSectionExchange.of(kiln, grid, kiln.solid)
-        self.wall = LinedWall.of(kiln, grid)
-        self.gas = TableGas(kiln.gas, kiln.pressure, kiln.gas_flow / grid.freeboard_area)
+    def __init__(self, kiln: Kiln, n_cells: int):
+        self.kiln = k = kiln
+        mech = k.mechanism
+        sp = mech.species
+        S = mech.mass_stoichiometry  # (n_reactions, n_species)
+        touched = np.any(S != 0.0, axis=0)
+        self.species = sp
+        self.bed_names = tuple(
+            s
+            for i, s in enumerate(sp.names)
+            if sp[s].phase == "bed" and (touched[i] or k.feed.get(s, 0) > 0)
+        )
+        self.gas_names = tuple(
+            s
+            for i, s in enumerate(sp.names)
+            if sp[s].phase == "gas" and (touched[i] or k.gas_in.get(s, 0) > 0)
+        )
+        self.bed_var = tuple(s for s in self.bed_names if touched[sp.index(s)])
+        self.gas_var = tuple(s for s in self.gas_names if touched[sp.index(s)])
+        self.bed_pos = np.array([self.bed_names.index(s) for s in self.bed_var], dtype=int)
+        self.gas_pos = np.array([self.gas_names.index(s) for s in self.gas_var], dtype=int)
+        self.bed_idx = np.array([sp.index(s) for s in self.bed_names], dtype=int)
+        self.gas_idx = np.array([sp.index(s) for s in self.gas_names], dtype=int)
+        self.nb, self.ng = len(self.bed_var), len(self.gas_var)
+        # reactants fed with the solids and never produced are solved for as sqrt(Q/S): the
+        # order-1/2 calcination rate (~ sqrt Q) then becomes smooth and complete conversion
+        # is reached without a singular Jacobian or negative flows
+        made = np.any(S > 0.0, axis=0)
+        self.sqrt_mask = np.array(
+            [bool(k.feed.get(s, 0) > 0 and not made[sp.index(s)]) for s in self.bed_var],
+            dtype=bool,
+        )
+        self.bed_in = np.array([k.feed.get(s, 0.0) for s in self.bed_names])
+        self.gas_inlet = np.array([k.gas_in.get(s, 0.0) for s in self.gas_names])
+        self.bed_scale = float(self.bed_in.sum())
+        self.gas_scale = float(self.gas_inlet.sum())
+        self.cp_bed = np.array([k.bed_cp.get(s, sp[s].cp) for s in self.bed_names])
+        # bed species with a temperature-dependent enthalpy (a library solid, phases included)
+        self.solid_pos = [
+            (i, k.bed_solids[s]) for i, s in enumerate(self.bed_names) if s in k.bed_solids
+        ]
+        self.mixture = GasMixture.of(self.gas_names, sp)
+        self.flow_in = {s: float(k.feed.get(s, 0.0)) for s in sp.bed_names}
+        self.i_h2o = self.gas_names.index("H2O") if "H2O" in self.gas_names else None
+        # grid, wall and exchange (shared with the heat model)
+        self.grid = g = cell_grid(
+            k.length,
+            k.radius,
+            n_cells,
+            k.fill_at,
+            k.layers,
+            heat_release=k.heat_release,
+            heat_release_profile=k.heat_release_profile,
+            section="chemistry",
+        )
+        self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
+        if k.layers:
+            self.wall = LinedWall.of(k, g)
+        else:
+            self.wall = ConstantUWall(k.wall_loss_u, 2.0 * np.pi * k.radius, k.ambient_temperature)
+        self.n_wall = self.wall.n_temperatures
+        self.i_species = 2 + self.n_wall  # first species unknown
+        self.nv = self.i_species + self.nb + self.ng
+        # bed depth solved with the balances (kiln/bed_depth.py): one more unknown per cell
+        self.depth = k.bed_depth
+        if self.depth is not None:
+            self.i_depth = self.nv
+            self.nv += 1
+        bed = k.bed_material or BulkBed(
+            k.bulk_density,
+            float(np.mean(self.cp_bed)),
+            k.particle_diameter,
+            k.bed_emissivity,
+            k.bed_conductivity,
+        )
+        self.exchange = CrossSectionExchange.of(k, g, bed, k.gas_emissivity_law)
+        # faces where each cell's gas leaves: j (counter-current) or j+1 (co-current)
+        self.gas_out = slice(None, -1) if k.counter_current else slice(1, None)
+        self.gas_in_face = -1 if k.counter_current else 0
+        self.reaction_scale = 1.0  # continuation parameter on the reaction rates
+        self.radiation_scale = 1.0  # continuation parameter on radiation
+        self.release_scale = 1.0  # continuation parameter on the heat released in the gas
+        self.q_ref = 1.0
 
-    def unpack(self, x):
-        """Face and cell temperatures from the unknowns ``x`` (..., n, nv)."""
+    # --- unpacking ---------------------------------------------------------------------------
+    def faces(self, x):
+        """Face temperatures and species flows from the unknowns ``x`` (..., n, nv)."""
         k = self.kiln
         batch = x.shape[:-2]
-        tb_in = np.broadcast_to(k.solids_inlet_temperature, batch + (1,))
-        tg_in = np.broadcast_to(k.gas_inlet_temperature, batch + (1,))
-        tb_nodes = np.concatenate([tb_in, x[..., 0]], axis=-1)
-        if k.counter_current:
-            tg_nodes = np.concatenate([x[..., 1], tg_in], axis=-1)
+        tb = np.concatenate([np.broadcast_to(k.feed_temperature, batch + (1,)), x[..., 0]], -1)
+        t_in = np.broadcast_to(k.gas_inlet_temperature, batch + (1,))
+        parts = [x[..., 1], t_in] if k.counter_current else [t_in, x[..., 1]]
+        tg = np.concatenate(parts, -1)
+        qb = np.broadcast_to(self.bed_in, batch + (self.n + 1, len(self.bed_names))).copy()
+        i0 = self.i_species
+        xb = x[..., i0 : i0 + self.nb]
+        qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
+        qg = np.broadcast_to(self.gas_inlet, batch + (self.n + 1, len(self.gas_names))).copy()
+        xg = x[..., i0 + self.nb : i0 + self.nb + self.ng]
+        qg[..., self.gas_out, self.gas_pos] = xg * self.gas_scale
+        return tb, tg, qb, qg
+
+    def bed_enthalpy(self, T):
+        """Sensible enthalpy of each bed species at ``T`` (J/kg, 0 at 298.15 K), ``T.shape +
+        (n_bed,)``: constant c_p, or a library solid's h(T)."""
+        h = self.cp_bed * (np.asarray(T)[..., None] - T_REF)
+        for i, solid in self.solid_pos:
+            h[..., i] = solid.enthalpy(T)
+        return h
+
+    def depth_faces(self, x):
+        """Bed depth at the faces (m): the unknowns, then the dam height at the discharge."""
+        dam = np.broadcast_to(self.depth.dam_height, x.shape[:-2] + (1,))
+        return np.concatenate([x[..., self.i_depth], dam], -1)
+
+    def geometry(self, x):
+        """Cell geometry: the fixed grid, or the cross-sections at the solved bed depth."""
+        if self.depth is None:
+            return self.grid
+        h = self.depth_faces(x)
+        return self.depth.geometry(self.grid, 0.5 * (h[..., 1:] + h[..., :-1]))
+
+    # --- closures -------------------------------------------------------------------------------
+    def gas_state(self, g_mean, geo=None) -> MixtureGas:
+        """The freeboard gas of the cells from their mean species flows (kg/s)."""
+        k = self.kiln
+        area = (geo or self.grid).freeboard_area
+        return MixtureGas.of(self.mixture, g_mean, k.pressure, area)
+
+    def exchange_of(self, geo):
+        """The cross-section exchange on the geometry ``geo``."""
+        if geo is self.grid:
+            return self.exchange
+        return dataclasses.replace(self.exchange, geometry=geo)
+
+    def coefficients(self, tg, tb, tw, g_mean, check=False, geo=None):
+        """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell means."""
+        geo = geo or self.grid
+        gas = self.gas_state(g_mean, geo)
+        return self.exchange_of(geo).coefficients(gas, tg, tb, tw, check=check)
+
+    # --- chemistry ------------------------------------------------------------------------------
+    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo=None):
+        """Production (..., n, n_species) kg/(s m) and heat absorbed (..., n) W/m."""
+        k = self.kiln
+        geo = geo or self.grid
+        shape = tb.shape
+        flat = int(np.prod(shape))
+        qb = np.maximum(qb_out, 0.0).reshape(flat, -1)
+        bed = {s: qb[:, i] for i, s in enumerate(self.bed_names)}
+        if self.depth is None:
+            holdup = qb.sum(-1) / k.bed_velocity
         else:
-            tg_nodes = np.concatenate([tg_in, x[..., 1]], axis=-1)
-        return tb_nodes, tg_nodes
+            holdup = (k.bulk_density * np.broadcast_to(geo.bed_area, shape)).reshape(flat)
+        xg = self.mixture.mole_fractions(qg_out).reshape(flat, -1)
+        pp = {s: k.pressure * xg[:, i] for i, s in enumerate(self.gas_names)}
+        if k.steam_flow is not None:
+            steam = np.full(flat, k.steam_flow)
+        elif self.i_h2o is not None:
+            steam = np.maximum(qg_out[..., self.i_h2o], 0.0).reshape(flat)
+        else:
+            steam = np.zeros(flat)
+        inputs = {
+            "steam_mass_flow": steam,
+            "drying_conductance": np.broadcast_to(h_gb * geo.chord, shape).reshape(flat),
+            "bed_heat_input": q_bed_in.reshape(flat),
+            "freeboard_area": np.broadcast_to(geo.freeboard_area, shape).reshape(flat),
+        }
+        st = ChemState(
+            np.maximum(tb, T_FLOOR).reshape(flat),
+            np.maximum(tg, T_FLOOR).reshape(flat),
+            bed,
+            holdup,
+            pp,
+            self.flow_in,
+            inputs,
+        )
+        out = self.kiln.mechanism.rates(st)
+        lam = self.reaction_scale
+        prod = lam * out.production.reshape(shape + (-1,))
+        heat = lam * out.heat_absorbed.reshape(shape)
+        rate = lam * out.reaction_rate.reshape(shape + (-1,))
+        heat_gas = lam * np.broadcast_to(out.heat_absorbed_gas, (flat,)).reshape(shape)
+        prod_gp = lam * np.broadcast_to(out.production_gas_phase, (flat, prod.shape[-1]))
+        return prod, heat, rate, heat_gas, prod_gp.reshape(prod.shape)
 
-    def coefficients(self, tg, tb, tw, check=False):
-        """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell-mean states.
-
-        With ``check`` the closures validate their inputs and warn
-        (:class:`~rotarykiln.errors.OutOfRangeWarning`) outside their validated ranges; the
-        solver does this once on the converged state, not inside the Newton loop.
-        """
-        return self.exchange.coefficients(self.gas, tg, tb, tw, check=check)
-
+    # --- residual -------------------------------------------------------------------------------
     def evaluate(self, x, full: bool = False):
-        """Residual (..., n, nv) in W per cell; with ``full`` also a dict of per-cell fluxes."""
-        k, g = self.kiln, self.grid
-        tb_nodes, tg_nodes = self.unpack(x)
-        tbn = np.maximum(tb_nodes, T_FLOOR)
-        tgn = np.maximum(tg_nodes, T_FLOOR)
+        """Residual (..., n, nv): W per cell for the energy rows, scaled flows for species."""
+        dz = self.dz
+        tb_n, tg_n, qb, qg = self.faces(x)
+        tbn = np.maximum(tb_n, T_FLOOR)
+        tgn = np.maximum(tg_n, T_FLOOR)
         tb = 0.5 * (tbn[..., :-1] + tbn[..., 1:])
         tg = 0.5 * (tgn[..., :-1] + tgn[..., 1:])
-        tl = np.maximum(x[..., 2 : 3 + self.n_layers], T_FLOOR)  # inner wall .. shell
+        tl = np.maximum(x[..., 2 : 2 + self.n_wall], T_FLOOR)  # inner wall (.. shell)
         tw = tl[..., 0]
-        fl, co = self.exchange.flows(self.gas, tg, tb, tw, self.homotopy)
+        g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
+        geo = self.geometry(x)
+        gas = self.gas_state(g_mean, geo)
+        fl, co = self.exchange_of(geo).flows(gas, tg, tb, tw, self.radiation_scale)
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
-        s_bed = 0.0
-        s_gas = self.homotopy * g.heat_release
-        extra_res = None
-        if self.sources is not None:
-            state = CellState(
-                z=g.z,
-                dz=g.dz,
-                t_gas=tg,
-                t_bed=tb,
-                t_wall=tw,
-                t_bed_nodes=tb_nodes,
-                t_gas_nodes=tg_nodes,
-                extra=x[..., 3 + self.n_layers :],
-                fill=g.fill,
-                bed_area=g.bed_area,
-                chord=g.chord,
-                solids_flow=k.solids_flow,
-                gas_flow=k.gas_flow,
-            )
-            src = self.sources(state)
-            s_bed = s_bed + np.asarray(src.q_bed)
-            s_gas = s_gas + np.asarray(src.q_gas)
-            extra_res = src.extra_residual
-        dz = g.dz
-        hs = k.solid.enthalpy(tbn)
-        hg = k.gas.enthalpy(tgn)
-        r_bed = k.solids_flow * (hs[..., 1:] - hs[..., :-1]) - dz * (q_gb + q_rb + q_cw + s_bed)
-        to_gas_out = q_gw + q_gb + q_rw + q_rb - s_gas
-        if k.counter_current:
-            r_gas = k.gas_flow * (hg[..., :-1] - hg[..., 1:]) + dz * to_gas_out
-        else:
-            r_gas = k.gas_flow * (hg[..., 1:] - hg[..., :-1]) + dz * to_gas_out
-        parts = [r_bed, r_gas] + [dz * row for row in wall_rows]
-        R = np.stack(parts, axis=-1)
-        if self.n_extra:
-            R = np.concatenate([R, np.asarray(extra_res) * self.extra_scale], axis=-1)
+        q_bed_in = q_gb + q_rb + q_cw
+        prod, heat, rate, heat_gas, prod_gp = self.rates(
+            tb, tg, qb[..., 1:, :], qg[..., self.gas_out, :], q_bed_in, co["h_gb"], geo
+        )
+        w_bed = prod[..., self.bed_idx]
+        w_gas = prod[..., self.gas_idx]
+        # what the bed releases (bed reactions) enters the gas at the bed temperature; a
+        # freeboard reaction releases -dH_298 r into the gas, whose sensible tables do the rest
+        w_released = w_gas - prod_gp[..., self.gas_idx]
+        hb_cell = self.bed_enthalpy(tb)
+        hg_at_bed = self.mixture.species_enthalpy(tb)
+        s_bed = -heat + (w_bed * hb_cell).sum(-1)
+        s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
+        if self.kiln.heat_release > 0:
+            s_gas = s_gas + self.release_scale * self.grid.heat_release
+        hb_nodes = self.bed_enthalpy(tbn)
+        Hb = (qb * hb_nodes).sum(-1)
+        Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
+        r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
+        sign = 1.0 if self.kiln.counter_current else -1.0  # downstream minus upstream
+        r_gas = sign * (Hg[..., :-1] - Hg[..., 1:]) + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
+        parts = [r_bed[..., None], r_gas[..., None]] + [(dz * r)[..., None] for r in wall_rows]
+        if self.nb:
+            qv = qb[..., self.bed_pos]
+            rb = (qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]) / self.bed_scale
+            parts.append(rb * self.q_ref)
+        if self.ng:
+            gv = qg[..., self.gas_pos]
+            dg = sign * (gv[..., :-1, :] - gv[..., 1:, :])
+            rg = (dg - dz * w_gas[..., self.gas_pos]) / self.gas_scale
+            parts.append(rg * self.q_ref)
+        if self.depth is not None:
+            q_vol = qb.sum(-1) / self.kiln.bulk_density
+            rd = self.depth.residual(self.depth_faces(x), q_vol, dz)
+            parts.append((rd * self.q_ref / self.depth.radius)[..., None])
+        R = np.concatenate(parts, axis=-1)
         if not full:
             return R
-        sources = {
-            "q_source_bed": np.broadcast_to(s_bed, tg.shape) * 1.0,
-            "q_source_gas": np.broadcast_to(s_gas, tg.shape) * 1.0,
+        chemistry = {
+            "q_source_gas": np.broadcast_to(self.release_scale * self.grid.heat_release, tg.shape)
+            * 1.0,
+            "q_reaction_absorbed": heat + heat_gas,
+            "q_bed_chemistry": s_bed,
+            "q_gas_chemistry": s_gas,
         }
-        return R, cell_report(tb, tg, fl, q_loss, co, **sources)
-
-    extra_scale = 1.0
+        if self.depth is not None:
+            chemistry["fill"] = geo.fill
+            chemistry["bed_depth"] = geo.depth
+        fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
+        # production by the bed reactions (the solver's global balance prices it at T_bed)
+        return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)
 
     def __call__(self, x):
         return self.evaluate(x)

@@ -1,6 +1,7 @@
 """Run the steady heat model from a validated case file (``heat:`` section).
 
-:func:`heat_kiln_from_case` builds a :class:`HeatKiln` from a :class:`rotarykiln.case.Case`;
+:func:`heat_kiln_from_case` builds the :class:`~rotarykiln.kiln.model.Kiln` of a bed that
+does not react (:meth:`~rotarykiln.kiln.model.Kiln.inert`) from a :class:`rotarykiln.case.Case`;
 :func:`run_heat_case` solves it; :func:`heat_runner` is the ``rotarykiln run`` section runner
 (writes ``heat_profiles.csv``, ``heat_summary.json`` and ``heat_profiles.png``).
 """
@@ -14,12 +15,11 @@ import numpy as np
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.coupling import bed_fill_profile
 from rotarykiln.kiln.flame import AirStream, Burner, fire
-from rotarykiln.kiln.model import Closures, HeatKiln
+from rotarykiln.kiln.model import Closures, Kiln
 from rotarykiln.kiln.run_files import write_solution_files
 from rotarykiln.kiln.solution import KilnSolution
-from rotarykiln.kiln.solve import solve_heat
+from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.kiln.wall import layers_from_case
-from rotarykiln.materials.gas import gas_table
 from rotarykiln.materials.solids import load_solid
 
 __all__ = [
@@ -57,7 +57,7 @@ def burner_from_case(section) -> Burner:
     )
 
 
-def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
+def heat_kiln_from_case(case) -> tuple[Kiln, int]:
     """The :class:`HeatKiln` and cell count of a case with a ``heat`` section."""
     h = case.heat
     if h is None:
@@ -93,7 +93,7 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
             )
         flame = fire(burner_from_case(h.burner), case.kiln.diameter, length)
         kw.update(
-            gas=flame.products.table,
+            gas_composition=flame.products.composition,
             gas_flow=flame.products.mass_flow,
             gas_inlet_temperature=flame.inlet_temperature,
             heat_release=flame.heat_release,
@@ -104,7 +104,7 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
         if h.gas.flow is None or h.gas.inlet_temperature is None:
             raise InputError("heat.gas.flow", h.gas.flow, "given with heat.gas.inlet_temperature")
         kw.update(
-            gas=gas_table(h.gas.composition),
+            gas_composition=h.gas.composition,
             gas_flow=h.gas.flow,
             gas_inlet_temperature=h.gas.inlet_temperature,
         )
@@ -113,13 +113,14 @@ def heat_kiln_from_case(case) -> tuple[HeatKiln, int]:
     if h.measurements is not None:
         meas = {k: np.asarray(v, dtype=float) for k, v in h.measurements.model_dump().items()}
         meas["wall_interface"] = int(h.measurements.wall_interface)
-    kiln = HeatKiln(
+    kiln = Kiln.inert(
         length=length,
         radius=case.kiln.diameter / 2.0,
         omega=case.operation.speed,
         fill=fill,
         solid=solid,
         solids_flow=case.operation.feed,
+        pressure=101325.0,
         solids_inlet_temperature=h.solid_inlet_temperature,
         layers=layers,
         counter_current=h.counter_current,
@@ -143,11 +144,11 @@ def run_heat_case(case) -> KilnSolution:
     >>> from rotarykiln.case import load_case
     >>> from rotarykiln.cases import builtin_case_path
     >>> sol = run_heat_case(load_case(builtin_case_path("heat/tscheng_A16")))
-    >>> abs(sol.balance_closure) < 1e-6
+    >>> abs(sol.energy_closure) < 1e-6
     True
     """
     kiln, cells = heat_kiln_from_case(case)
-    return solve_heat(kiln, cells)
+    return solve_kiln(kiln, cells)
 
 
 def heat_runner(case, out: Path) -> dict:

@@ -1,4 +1,4 @@
-"""Result of a steady kiln heat solve: profiles, heat flows per path, balance and summary."""
+"""Result of a reacting kiln solve: temperatures, species flows, rates, balances."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.kiln.profiles import heat_flow_columns, plot_temperature_profiles
 
 __all__ = ["KilnSolution"]
@@ -14,69 +15,116 @@ __all__ = ["KilnSolution"]
 
 @dataclass(frozen=True)
 class KilnSolution:
-    """Steady kiln heat-transfer solution (SI units).
+    """Steady reacting kiln solution (SI units).
 
-    Face (node) profiles: ``z_nodes`` (m), ``t_bed_nodes``, ``t_gas_nodes`` (K).
-    Cell profiles: ``z`` (m), ``t_bed``, ``t_gas`` (cell means, K), ``t_wall`` (inner wall
-    surface, K), ``t_shell`` (outer shell surface, K), ``t_lining`` (interfaces, inner to
-    outer, shape ``(n_layers + 1, n)``, K), ``fill`` (-), ``fluxes`` (dict of W/m per cell:
-    gas->wall and gas->bed convection, covered wall->bed, radiation to wall and to bed, shell
-    loss, sources; and the coefficients h_gw, h_gb, h_cw in W/(m2 K) and the gas emissivity).
-    Summary: ``heat_to_solids``, ``heat_from_gas``, ``heat_release``, ``shell_loss`` (W),
-    ``energy_sheet`` (dict: fuel LHV/HHV input, sensible inputs, heat to solids, shell and
-    exhaust losses, closure, W; thermal efficiency), ``burner`` (dict of the burner's figures:
-    flame length, jet numbers, excess air; empty without a burner),
-    ``energy_in``, ``energy_out`` (W, enthalpy flows relative to 298.15 K plus heat release and
-    shell loss), ``balance_closure`` = (in - out)/heat_to_solids (-).
-    Solver: ``iterations``, ``residual`` (max scaled residual), ``n_cells``.
+    Face profiles (``n + 1`` values, z = 0 at the solids inlet): ``z_nodes`` (m),
+    ``t_bed_nodes``, ``t_gas_nodes`` (K), ``bed_flows`` and ``gas_flows`` (species -> kg/s).
+    Cell profiles: ``z`` (m), ``t_bed``, ``t_gas`` (cell means), ``t_wall`` (inner wall, K),
+    ``t_lining`` (wall temperatures, inner surface to shell, shape ``(n_wall, n)``, K; one row
+    for the constant-U wall),
+    ``reaction_rates`` (reaction -> kg basis/(s m)), ``fluxes`` (W/m per path, coefficients).
+    Balances: ``energy_closure`` = (enthalpy in - out - shell loss - reaction heat) / heat to the
+    solids (-), ``element_closure`` (element -> relative |in - out|), ``reaction_heat`` (W,
+    absorbed at 298.15 K basis), ``shell_loss`` (W), ``energy_in``/``energy_out`` (W, sensible
+    enthalpy flows relative to 298.15 K), ``heat_release`` (W released in the gas by a
+    burner's flame), ``energy_sheet`` (dict, W: fuel LHV/HHV input, sensible inputs, heat to
+    the solids, shell and exhaust losses, closure; thermal efficiency), ``burner`` (dict of
+    the burner's figures; empty without one). ``fill_profile`` (-, cells), ``measurements``
+    (measured profiles drawn by :meth:`plot`). Solver: ``iterations``, ``residual``.
     """
 
     name: str
     z_nodes: np.ndarray
     t_bed_nodes: np.ndarray
     t_gas_nodes: np.ndarray
+    bed_flows: dict
+    gas_flows: dict
     z: np.ndarray
     t_bed: np.ndarray
     t_gas: np.ndarray
     t_wall: np.ndarray
-    t_shell: np.ndarray
-    t_lining: np.ndarray
-    fill: np.ndarray
+    reaction_rates: dict
     fluxes: dict
-    extra: np.ndarray
-    heat_to_solids: float
-    heat_from_gas: float
-    heat_release: float
-    shell_loss: float
     energy_in: float
     energy_out: float
-    balance_closure: float
+    shell_loss: float
+    reaction_heat: float
+    heat_to_solids: float
+    energy_closure: float
+    element_closure: dict
     iterations: int
     residual: float
-    n_cells: int
-    counter_current: bool
-    measurements: dict | None = field(default=None, repr=False)
-    energy_sheet: dict = field(default_factory=dict, repr=False)
-    burner: dict = field(default_factory=dict, repr=False)
+    residence_time: float
+    fill: float
+    feed: dict = field(repr=False, default_factory=dict)
+    t_lining: np.ndarray | None = field(repr=False, default=None)
+    counter_current: bool = True
+    heat_release: float = 0.0
+    energy_sheet: dict = field(repr=False, default_factory=dict)
+    burner: dict = field(repr=False, default_factory=dict)
+    measurements: dict | None = field(repr=False, default=None)
+    fill_profile: np.ndarray | None = field(repr=False, default=None)
 
     @property
-    def bed_outlet_temperature(self) -> float:
-        """Bed temperature at the solids discharge (z = L), K."""
-        return float(self.t_bed_nodes[-1])
+    def t_shell(self) -> np.ndarray | None:
+        """Outer shell temperature (K, cells) of a lined wall; None for the constant-U wall."""
+        if self.t_lining is None or len(self.t_lining) < 2:
+            return None
+        return self.t_lining[-1]
+
+    # --- performance --------------------------------------------------------------------------
+    def _dry(self, i: int) -> float:
+        return float(sum(v[i] for s, v in self.bed_flows.items() if s != MOISTURE))
 
     @property
-    def gas_outlet_temperature(self) -> float:
-        """Gas temperature where the gas leaves (z = 0 counter-current, z = L co-current), K."""
-        return float(self.t_gas_nodes[0] if self.counter_current else self.t_gas_nodes[-1])
+    def burn_off(self) -> float:
+        """Dry-basis loss of solid mass, % (seed 004's burn-off, moisture excluded)."""
+        d0, d1 = self._dry(0), self._dry(-1)
+        return 100.0 * (d0 - d1) / d0 if d0 > 0 else 0.0
+
+    @property
+    def production(self) -> float:
+        """Dry solids out per dry solids in, % (100 - burn-off)."""
+        return 100.0 - self.burn_off
+
+    def conversion(self, species: str) -> np.ndarray:
+        """1 - Q(z)/Q_in of a bed species along the faces, -."""
+        q = self.bed_flows[species]
+        return 1.0 - q / q[0] if q[0] > 0 else np.zeros_like(q)
+
+    def position_of_conversion(self, species: str, conversion: float) -> float:
+        """First z (m) where the conversion of ``species`` reaches ``conversion``."""
+        x = np.maximum.accumulate(self.conversion(species))
+        if conversion > x[-1]:
+            return float("nan")
+        j = int(np.argmax(x >= conversion))
+        if j == 0:
+            return 0.0
+        x0, x1 = x[j - 1], x[j]
+        f = (conversion - x0) / (x1 - x0) if x1 > x0 else 1.0
+        return float(self.z_nodes[j - 1] + f * (self.z_nodes[j] - self.z_nodes[j - 1]))
+
+    def onset(self, reaction: str, fraction: float = 0.01) -> tuple[float, float]:
+        """First cell (z, T_bed) where ``reaction`` exceeds ``fraction`` of its peak rate."""
+        r = self.reaction_rates[reaction]
+        if r.max() <= 0:
+            return float("nan"), float("nan")
+        j = int(np.argmax(r >= fraction * r.max()))
+        return float(self.z[j]), float(self.t_bed[j])
+
+    def end(self, reaction: str, fraction: float = 0.01) -> float:
+        """Last cell centre z where ``reaction`` exceeds ``fraction`` of its peak rate, m."""
+        r = self.reaction_rates[reaction]
+        if r.max() <= 0:
+            return float("nan")
+        j = len(r) - 1 - int(np.argmax(r[::-1] >= fraction * r.max()))
+        return float(self.z[j])
 
     @property
     def thermal_efficiency(self) -> float:
-        """Heat to the solids over the fuel's LHV input (fired kilns), or over the heat given
-        up by the gas plus the heat release (kilns without a burner), -."""
-        if "thermal_efficiency" in self.energy_sheet:
-            return float(self.energy_sheet["thermal_efficiency"])
-        supplied = self.heat_from_gas + self.heat_release
-        return float(self.heat_to_solids / supplied) if supplied else float("nan")
+        """Heat to the solids (sensible + reaction) over the fuel's LHV input (fired kilns) or
+        the heat the gas gives up, -."""
+        return float(self.energy_sheet.get("thermal_efficiency", float("nan")))
 
     def bed_temperature_at(self, z):
         """Bed temperature (K) at positions ``z`` (m), linear between faces."""
@@ -87,48 +135,104 @@ class KilnSolution:
         return np.interp(z, self.z_nodes, self.t_gas_nodes)
 
     def wall_temperature_at(self, z, interface: int = 0):
-        """Lining temperature (K) at ``z`` (m) at ``interface`` (0 inner surface, -1 shell)."""
-        return np.interp(z, self.z, self.t_lining[interface])
+        """Wall temperature (K) at ``z`` (m) at ``interface`` (0 inner surface, -1 shell)."""
+        rows = self.t_lining if self.t_lining is not None else self.t_wall[None, :]
+        return np.interp(z, self.z, rows[interface])
+
+    @property
+    def gas_outlet_temperature(self) -> float:
+        """Gas temperature where the gas leaves (z = 0 counter-current, z = L co-current), K."""
+        return float(self.t_gas_nodes[0 if self.counter_current else -1])
+
+    @property
+    def bed_outlet_temperature(self) -> float:
+        return float(self.t_bed_nodes[-1])
 
     def summary(self) -> dict:
-        """Outlet temperatures, heat flows, efficiency, balance and solver figures."""
-        return {
+        """Scalars: outlet states, burn-off, conversions, onsets, balances, solver figures."""
+        out = {
             "name": self.name,
             "bed_outlet_temperature_K": self.bed_outlet_temperature,
             "gas_outlet_temperature_K": self.gas_outlet_temperature,
-            "heat_to_solids_W": self.heat_to_solids,
-            "heat_from_gas_W": self.heat_from_gas,
-            "heat_release_W": self.heat_release,
+            "bed_max_temperature_K": float(self.t_bed_nodes.max()),
+            "gas_max_temperature_K": float(self.t_gas_nodes.max()),
+            "gas_min_temperature_K": float(self.t_gas_nodes.min()),
+            "gas_outlet_flow_kg_s": float(
+                sum(v[0 if self.counter_current else -1] for v in self.gas_flows.values())
+            ),
+            "solids_outlet_flow_kg_s": float(sum(v[-1] for v in self.bed_flows.values())),
+            "reaction_heat_W": self.reaction_heat,
             "shell_loss_W": self.shell_loss,
-            "thermal_efficiency": self.thermal_efficiency,
-            "energy_balance_closure": self.balance_closure,
+            "heat_to_solids_W": self.heat_to_solids,
+            "energy_balance_closure": self.energy_closure,
+            "element_balance_closure": max(self.element_closure.values(), default=0.0),
+            "residence_time_s": self.residence_time,
+            "fill": self.fill,
             "newton_iterations": self.iterations,
             "residual": self.residual,
-            "cells": self.n_cells,
+            "cells": len(self.z),
+            "thermal_efficiency": self.thermal_efficiency,
             **{f"energy_{k}": v for k, v in self.energy_sheet.items() if k != "thermal_efficiency"},
             **{f"burner_{k}": v for k, v in self.burner.items()},
         }
+        if self.reaction_rates:  # a mass-losing bed: burn-off and production (seed 004)
+            out["burn_off_percent"] = self.burn_off
+            out["production_percent"] = self.production
+        for s, q in self.bed_flows.items():
+            if s != MOISTURE and q[0] > 0 and q[-1] < q[0]:
+                x = self.conversion(s)
+                out[f"conversion_{s}"] = float(x[-1])
+                for label, frac in (("1pct", 0.01), ("99pct", 0.99)):
+                    z = self.position_of_conversion(s, frac * x[-1])
+                    out[f"z_conversion_{label}_{s}_m"] = z
+                    out[f"T_bed_conversion_{label}_{s}_K"] = float(
+                        np.interp(z, self.z_nodes, self.t_bed_nodes)
+                    )
+        for r in self.reaction_rates:
+            z_on, t_on = self.onset(r)
+            out[f"onset_z_m_{r}"] = z_on
+            out[f"onset_T_bed_K_{r}"] = t_on
+            out[f"end_z_m_{r}"] = self.end(r)
+        return out
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per cell: position, temperatures, fill and the heat flow of each path."""
+        """One row per face: position, temperatures (wall, rates at cell centres interpolated)."""
         data = {
-            "z_m": self.z,
-            "T_gas_K": self.t_gas,
-            "T_bed_K": self.t_bed,
-            "T_wall_K": self.t_wall,
-            "T_shell_K": self.t_shell,
-            "fill": self.fill,
+            "z_m": self.z_nodes,
+            "T_bed_K": self.t_bed_nodes,
+            "T_gas_K": self.t_gas_nodes,
+            "T_wall_K": np.interp(self.z_nodes, self.z, self.t_wall),
         }
-        data.update(heat_flow_columns(self.fluxes))
-        for key, value in self.fluxes.items():
-            if key.startswith("h_"):
-                data[f"{key}_W_per_m2K"] = np.asarray(value)
-            elif key == "eps_gas":
-                data["eps_gas"] = np.broadcast_to(np.asarray(value), self.z.shape)
+        if self.t_shell is not None:
+            data["T_shell_K"] = np.interp(self.z_nodes, self.z, self.t_shell)
+        for s, q in self.bed_flows.items():
+            data[f"bed_{s}_kg_s"] = q
+        for s, q in self.gas_flows.items():
+            data[f"gas_{s}_kg_s"] = q
+        for r, v in self.reaction_rates.items():
+            data[f"rate_{r}_kg_s_m"] = np.interp(self.z_nodes, self.z, v)
+        data.update(heat_flow_columns(self.fluxes, lambda v: np.interp(self.z_nodes, self.z, v)))
         return pd.DataFrame(data)
 
     def plot(self, ax=None):
-        """Temperature profiles (gas, bed, wall, shell), with measured points if any."""
-        return plot_temperature_profiles(
-            self, ax, t_shell=self.t_shell, measurements=self.measurements
-        )
+        """Temperatures (left) and solids and gas flows (right); returns the Figure."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+        else:
+            fig = np.atleast_1d(ax)[0].figure
+        a0, a1 = np.atleast_1d(ax)[:2]
+        plot_temperature_profiles(self, a0, t_shell=self.t_shell, measurements=self.measurements)
+        for s, q in self.bed_flows.items():
+            if np.ptp(q) > 0 or q[0] > 0:
+                a1.plot(self.z_nodes, q * 1e3, label=f"bed {s}")
+        for s, q in self.gas_flows.items():
+            if np.ptp(q) > 0:
+                a1.plot(self.z_nodes, q * 1e3, ls="--", label=f"gas {s}")
+        a1.set_xlabel("z from solids inlet (m)")
+        a1.set_ylabel("mass flow (g/s)")
+        a1.set_title(f"burn-off {self.burn_off:.2f} % (dry)")
+        a1.legend(fontsize=7, ncol=2)
+        fig.tight_layout()
+        return fig

@@ -1,125 +1,88 @@
-"""Solve the steady kiln heat balances at once by Newton (see :mod:`.discretisation`)."""
+"""Solve the reacting kiln (energy + species) at once by Newton, with continuation fallbacks."""
 
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
 
-from rotarykiln.errors import InputError
+from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
+from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln import steady
-from rotarykiln.kiln.discretisation import build_grid
-from rotarykiln.kiln.model import HeatKiln
-from rotarykiln.kiln.residual import HeatResidual
+from rotarykiln.kiln.model import Kiln
+from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.solution import KilnSolution
-from rotarykiln.kiln.sources import SourceTerms
 
-__all__ = ["solve_heat", "energy_sheet", "DEFAULT_CELLS"]
+__all__ = ["solve_kiln", "energy_sheet", "ENERGY_RTOL"]
 
-DEFAULT_CELLS = 100
+#: Energy closure demanded of every reacting solve (issue 7).
+ENERGY_RTOL = 1e-6
+#: Floor of the finite-difference step of the scaled species unknowns (flow / inlet flow).
+SPECIES_STEP_FLOOR = 1e-6
 
 
-def _hot_temperature(kiln: HeatKiln) -> float:
-    """Temperature the gas would reach with all the heat release (for the initial guess)."""
-    if kiln.heat_release <= 0:
-        return kiln.gas_inlet_temperature
-    target = kiln.gas.enthalpy(kiln.gas_inlet_temperature) + kiln.heat_release / kiln.gas_flow
+def _hot_temperature(res: KilnResidual) -> float:
+    """Temperature the inlet gas would reach with all the heat released in it, K."""
+    k = res.kiln
+    if k.heat_release <= 0:
+        return k.gas_inlet_temperature
     t = np.linspace(200.0, 3200.0, 601)
-    return float(np.interp(target, kiln.gas.enthalpy(t), t))
+    h = res.mixture.species_enthalpy(t) @ res.gas_inlet
+    target = float(res.mixture.species_enthalpy(k.gas_inlet_temperature) @ res.gas_inlet)
+    return float(np.interp(target + k.heat_release, h, t))
 
 
-def _initial_guess(kiln: HeatKiln, res: HeatResidual) -> np.ndarray:
-    g = res.grid
+def _initial_guess(res: KilnResidual) -> np.ndarray:
+    k = res.kiln
     t_b, t_g, t_wall = steady.initial_temperatures(
-        g.z_nodes,
-        kiln.solids_inlet_temperature,
-        _hot_temperature(kiln),
-        res.wall,
-        kiln.counter_current,
+        res.z_nodes, k.feed_temperature, _hot_temperature(res), res.wall, k.counter_current
     )
-    x = np.empty((g.n, res.nv))
+    i0 = res.i_species
+    x = np.empty((res.n, res.nv))
     x[:, 0] = t_b
     x[:, 1] = t_g
-    x[:, 2 : 3 + res.n_layers] = t_wall
-    if res.n_extra:
-        x[:, 3 + res.n_layers :] = np.asarray(res.sources.initial_extra(g.z), dtype=float).reshape(
-            g.n, res.n_extra
-        )
+    x[:, 2:i0] = t_wall
+    xb = res.bed_in[res.bed_pos] / res.bed_scale
+    x[:, i0 : i0 + res.nb] = np.where(res.sqrt_mask, np.sqrt(xb), xb)
+    x[:, i0 + res.nb : i0 + res.nb + res.ng] = res.gas_inlet[res.gas_pos] / res.gas_scale
+    if res.depth is not None:
+        x[:, res.i_depth] = res.depth.initial_depth(k.length, res.z_nodes[:-1], k.feed_flow)
     return x
 
 
-def energy_sheet(kiln: HeatKiln, tb_nodes, t_g_in, t_g_out, shell_loss, release) -> dict:
-    """Energy balance sheet of a converged heat solve, W (and the efficiency, -).
-
-    Inputs: the fuel (its LHV and, for information, its HHV), the sensible enthalpy of the
-    gas and solids streams above 298.15 K, the heat of combustion as the model releases it
-    (``combustion_heat_W``; it differs from the LHV input only by the dissociation of the
-    products and the heat capacity of preheated streams); outputs: heat to the solids, shell
-    loss, exhaust (sensible enthalpy of the flue gas leaving); ``closure_W`` = in - out.
-    ``thermal_efficiency`` = heat to the solids / fuel LHV input (heat to the solids / heat
-    given up by the gas for a kiln without a burner).
-    """
-    h_s, h_g = kiln.solid.enthalpy, kiln.gas.enthalpy
-    m_s, m_g = kiln.solids_flow, kiln.gas_flow
-    solids_in = m_s * float(h_s(tb_nodes[0]))
-    to_solids = m_s * float(h_s(tb_nodes[-1]) - h_s(tb_nodes[0]))
-    exhaust = m_g * float(h_g(t_g_out))
-    flame = kiln.flame
-    if flame is not None:
-        gas_in = float(flame.sensible_input)
-        combustion = float(flame.products.heat_release)
-        lhv, hhv = float(flame.fuel_lhv), float(flame.fuel_hhv)
-        efficiency = to_solids / lhv
-    else:
-        gas_in = m_g * float(h_g(t_g_in))
-        combustion, lhv, hhv = float(release), 0.0, 0.0
-        supplied = gas_in - exhaust + combustion
-        efficiency = to_solids / supplied if supplied else float("nan")
-    if flame is not None and flame.combustion != "instant":
-        combustion = float(release)
-    total_in = solids_in + gas_in + combustion
-    total_out = solids_in + to_solids + shell_loss + exhaust
-    return {
-        "fuel_lhv_input_W": lhv,
-        "fuel_hhv_input_W": hhv,
-        "combustion_heat_W": combustion,
-        "sensible_input_gas_W": gas_in,
-        "sensible_input_solids_W": solids_in,
-        "heat_to_solids_sensible_W": to_solids,
-        "heat_to_solids_reaction_W": 0.0,
-        "shell_loss_W": float(shell_loss),
-        "exhaust_loss_W": exhaust,
-        "closure_W": total_in - total_out,
-        "closure_relative": (total_in - total_out) / max(total_in, 1.0),
-        "thermal_efficiency": efficiency,
-    }
+def _reference_heat(res: KilnResidual) -> float:
+    k = res.kiln
+    th, tf = _hot_temperature(res), k.feed_temperature
+    hg = res.mixture.species_enthalpy(np.array([th, tf]))
+    span_g = float(res.gas_inlet @ (hg[0] - hg[1]))
+    hb = res.bed_enthalpy(np.array([th, tf]))
+    span_s = float(res.bed_in @ (hb[0] - hb[1]))
+    return max(abs(span_g), abs(span_s), 1.0)
 
 
-def solve_heat(
-    kiln: HeatKiln,
-    n_cells: int = DEFAULT_CELLS,
+def solve_kiln(
+    kiln: Kiln,
+    n_cells: int = 100,
     *,
-    sources: SourceTerms | None = None,
     tol: float = 1e-11,
     max_iter: int = 60,
     initial: np.ndarray | None = None,
+    check_balances: bool = True,
 ) -> KilnSolution:
-    """Solve the steady heat balances of ``kiln`` on ``n_cells`` finite volumes.
+    """Solve the steady energy and species balances of a reacting kiln.
 
     Parameters
     ----------
-    kiln : HeatKiln
-        Inputs (SI).
+    kiln : Kiln
     n_cells : int
-        Number of equal cells (default 100).
-    sources : SourceTerms, optional
-        Per-cell heat release and extra unknowns (reactions); see :mod:`.sources`.
+        Number of equal cells (>= 4).
     tol : float
-        Newton tolerance on ``max|residual| / Q_ref`` with ``Q_ref`` the larger of the enthalpy
-        spans of gas and solids plus the heat release (W).
+        Newton tolerance on ``max|R| / Q_ref`` (energy rows in W; species rows are flows over
+        the phase's inlet flow times ``Q_ref``).
     max_iter : int
     initial : array (n_cells, nv), optional
-        Initial guess of the unknowns (e.g. a neighbouring solution).
+        Initial guess (e.g. the unknowns of a neighbouring solution, ``solution.fluxes["x"]``).
+    check_balances : bool
+        Raise :class:`ConvergenceError` if the element balance exceeds 1e-8 or the energy
+        balance 1e-6 (relative).
 
     Returns
     -------
@@ -128,87 +91,185 @@ def solve_heat(
     Raises
     ------
     ConvergenceError
-        When Newton fails, also after continuation in radiation and heat release; the
-        message names the cell (z) and the equation with the largest residual.
+        Newton fails after continuation in the reaction rates (and radiation); the message
+        names the cell (z) and equation with the largest residual. Also when a balance does
+        not close or a result is not finite.
     """
-    if sources is not None and not isinstance(sources, SourceTerms):
-        raise InputError("sources", type(sources).__name__, "a SourceTerms object")
-    grid = build_grid(kiln, n_cells)
-    res = HeatResidual(kiln, grid, sources)
-    t_hot = _hot_temperature(kiln)
-    tf = kiln.solids_inlet_temperature
-    span_g = kiln.gas_flow * abs(kiln.gas.enthalpy(t_hot) - kiln.gas.enthalpy(tf))
-    span_s = kiln.solids_flow * abs(kiln.solid.enthalpy(t_hot) - kiln.solid.enthalpy(tf))
-    q_ref = float(max(span_g, span_s, 1.0))
-    res.extra_scale = q_ref
-    nl = res.n_layers
-    extra = [f"source unknown {i}" for i in range(res.n_extra)]
-    where = steady.locator(grid.z, steady.equation_names(res.wall, extra))
-
-    def set_homotopy(lam):
-        res.homotopy = lam
-
-    # continuation if Newton fails: radiation and heat release ramped from 0 to 1
-    x0 = _initial_guess(kiln, res) if initial is None else np.array(initial, dtype=float)
-    kwargs = dict(tol=tol, max_iter=max_iter, temperature_vars=3 + nl, where=where)
-    x, total_iter = steady.newton_with_continuation(
-        res, x0, q_ref, steady.ramp(set_homotopy), **kwargs
-    )
-    res.homotopy = 1.0
-    R, fl = res.evaluate(x, full=True)
-    tb_nodes, tg_nodes = res.unpack(x)
-    fluxes = {k: np.array(v, dtype=float) * np.ones(grid.n) for k, v in fl.items()}
+    if int(n_cells) != n_cells or n_cells < 4:
+        raise InputError("chemistry.cells", n_cells, "an integer >= 4")
+    res = KilnResidual(kiln, int(n_cells))
+    q_ref = _reference_heat(res)
+    res.q_ref = q_ref
+    i0 = res.i_species
+    species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
+    if res.depth is not None:
+        species.append("bed depth (Kramers)")
+    where = steady.locator(res.z, steady.equation_names(res.wall, species))
+    floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
+    kw = dict(tol=tol, max_iter=max_iter, temperature_vars=i0, where=where, step_floor=floor)
+    x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
+    x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
+    R, fl, prod, rate, (tb_n, tg_n, qb, qg) = res.evaluate(x[None], full=True)
+    R, prod, rate = R[0], prod[0], rate[0]
+    tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
+    fl = {key: np.broadcast_to(v, (1, res.n))[0] * np.ones(res.n) for key, v in fl.items()}
     steady.check_finite(
-        {"T_bed": tb_nodes, "T_gas": tg_nodes, "T_wall": x[:, 2 : 3 + nl]},
-        fluxes,
-        grid.z,
-        total_iter,
+        {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
     )
-    h_s = kiln.solid.enthalpy
-    h_g = kiln.gas.enthalpy
-    t_g_in = kiln.gas_inlet_temperature
-    t_g_out = tg_nodes[0] if kiln.counter_current else tg_nodes[-1]
-    heat_to_solids = kiln.solids_flow * float(h_s(tb_nodes[-1]) - h_s(tb_nodes[0]))
-    heat_from_gas = kiln.gas_flow * float(h_g(t_g_in) - h_g(t_g_out))
-    dz = grid.dz
-    shell_loss = float(np.sum(fl["q_shell_loss"]) * dz)
-    src_bed = float(np.sum(fl["q_source_bed"]) * dz)
-    src_gas = float(np.sum(fl["q_source_gas"]) * dz)
-    release = src_bed + src_gas
-    e_in = kiln.solids_flow * float(h_s(tb_nodes[0])) + kiln.gas_flow * float(h_g(t_g_in))
-    e_in += release
-    e_out = kiln.solids_flow * float(h_s(tb_nodes[-1])) + kiln.gas_flow * float(h_g(t_g_out))
-    e_out += shell_loss
-    denom = heat_to_solids if abs(heat_to_solids) > 0 else q_ref
-    closure = (e_in - e_out) / denom
-    sheet = energy_sheet(kiln, tb_nodes, t_g_in, t_g_out, shell_loss, release)
-    if abs(closure) > 1e-6:
-        warnings.warn(
-            f"energy balance closes only to {closure:.3g} of the heat to the solids",
-            RuntimeWarning,
-            stacklevel=2,
-        )
-    # validity ranges of the closures, checked once on the converged state
-    res.coefficients(fluxes["t_gas_mean"], fluxes["t_bed_mean"], x[:, 2], check=True)
-    kiln.solid.check_range(tb_nodes)  # the solid's c_p fit (phases, ranges in solids.yaml)
+    # validity ranges of the heat-transfer closures, checked once on the converged state
+    g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
+    geo = res.geometry(x)
+    res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True, geo=geo)
+    # global balances
+    dz = res.dz
+    hb = res.bed_enthalpy(tb_n)
+    hg = res.mixture.species_enthalpy(tg_n)
+    release = float(np.sum(res.grid.heat_release) * dz)
+    gi, go = (-1, 0) if kiln.counter_current else (0, -1)  # gas inlet and outlet faces
+    e_in = float(qb[0] @ hb[0] + qg[gi] @ hg[gi])
+    e_out = float(qb[-1] @ hb[-1] + qg[go] @ hg[go])
+    loss = float(np.sum(fl["q_shell_loss"]) * dz)
+    w_all = prod
+    h_all = np.zeros_like(prod)
+    h_all[:, res.bed_idx] = res.bed_enthalpy(fl["t_bed_mean"])
+    h_all[:, res.gas_idx] = res.mixture.species_enthalpy(fl["t_bed_mean"])
+    reaction_heat = float(np.sum(fl["q_reaction_absorbed"] - (w_all * h_all).sum(-1)) * dz)
+    heat_to_solids = float(qb[-1] @ hb[-1] - qb[0] @ hb[0])
+    denom = max(abs(heat_to_solids), abs(reaction_heat), 1.0)
+    closure = (e_in + release - e_out - loss - reaction_heat) / denom
+    inlets = {s: float(qb[0, i]) for i, s in enumerate(res.bed_names)}
+    inlets.update({s: float(qg[gi, i]) for i, s in enumerate(res.gas_names)})
+    outlets = {s: float(max(qb[-1, i], 0.0)) for i, s in enumerate(res.bed_names)}
+    outlets.update({s: float(max(qg[go, i], 0.0)) for i, s in enumerate(res.gas_names)})
+    if check_balances:
+        elements = check_stream_balance(inlets, outlets, res.species, rtol=ELEMENT_RTOL)
+        if not abs(closure) <= ENERGY_RTOL:
+            raise ConvergenceError(
+                "energy balance of the reacting kiln does not close",
+                relative_closure=closure,
+                tolerance=ENERGY_RTOL,
+                iterations=total,
+            )
+    else:
+        from rotarykiln.chemistry.balance import element_flows
+
+        fin, fout = element_flows(inlets, res.species), element_flows(outlets, res.species)
+        elements = {e: abs(fin[e] - fout[e]) / max(abs(fin[e]), abs(fout[e]), 1e-300) for e in fin}
+    fl["x"] = x.copy()
+    sheet = energy_sheet(
+        kiln,
+        solids_in=float(qb[0] @ hb[0]),
+        to_solids=heat_to_solids,
+        reaction_heat=reaction_heat,
+        gas_in=float(qg[gi] @ hg[gi]),
+        exhaust=float(qg[go] @ hg[go]),
+        shell_loss=loss,
+        release=release,
+    )
     return KilnSolution(
         name=kiln.name,
-        **steady.profile_fields(
-            grid, tb_nodes, tg_nodes, x[:, 2 : 3 + nl], fluxes, R, q_ref, total_iter
-        ),
-        t_shell=x[:, 2 + nl].copy(),
-        fill=grid.fill,
-        extra=x[:, 3 + nl :].copy(),
-        heat_to_solids=heat_to_solids,
-        heat_from_gas=heat_from_gas,
-        heat_release=release,
-        shell_loss=shell_loss,
+        **steady.profile_fields(res.grid, tb_n, tg_n, x[:, 2:i0], fl, R, q_ref, total),
+        bed_flows={s: np.maximum(qb[:, i], 0.0) for i, s in enumerate(res.bed_names)},
+        gas_flows={s: np.maximum(qg[:, i], 0.0) for i, s in enumerate(res.gas_names)},
+        reaction_rates={r: rate[:, i].copy() for i, r in enumerate(kiln.mechanism.names)},
         energy_in=e_in,
         energy_out=e_out,
-        balance_closure=float(closure),
-        energy_sheet=sheet,
-        n_cells=grid.n,
+        shell_loss=loss,
+        reaction_heat=reaction_heat,
+        heat_to_solids=heat_to_solids,
+        energy_closure=float(closure),
+        element_closure={e: float(v) for e, v in elements.items()},
+        residence_time=_residence_time(res, geo, qb),
+        fill=kiln.fill if res.depth is None else float(np.mean(geo.fill)),
+        feed=dict(kiln.feed),
         counter_current=kiln.counter_current,
-        measurements=kiln.measurements,
+        heat_release=release,
+        energy_sheet=sheet,
         burner=kiln.flame.summary() if kiln.flame is not None else {},
+        measurements=kiln.measurements,
+        fill_profile=res.geometry(x).fill * np.ones(res.n),
     )
+
+
+def energy_sheet(
+    kiln, *, solids_in, to_solids, reaction_heat, gas_in, exhaust, shell_loss, release
+) -> dict:
+    """Energy balance sheet of a converged solve, W (and the thermal efficiency, -).
+
+    Inputs: the fuel of a burner (its LHV and, for information, its HHV), the sensible
+    enthalpy of the gas and solids streams above 298.15 K and the heat of combustion as the
+    model releases it (``combustion_heat_W``: for instant burn-out the enthalpy of the
+    products entering at their adiabatic temperature less that of the unburnt streams, the
+    heat released along the flame otherwise; it differs from the LHV input only by the
+    dissociation of the products, the heat capacity of preheated streams and the gas
+    property tables, by < 0.2 %).
+    Outputs: heat to the solids (sensible, and absorbed by the bed's reactions), shell loss,
+    exhaust (sensible enthalpy of the flue gas leaving). ``closure_W`` = in - out.
+    ``thermal_efficiency`` = heat to the solids (sensible + reaction) / fuel LHV input, or
+    over the heat the gas gives up for a kiln without a burner.
+    """
+    flame = kiln.flame
+    if flame is not None:
+        lhv, hhv = float(flame.fuel_lhv), float(flame.fuel_hhv)
+        if flame.combustion == "instant":
+            # the products enter at the adiabatic temperature: the heat of combustion is their
+            # enthalpy (the model's gas tables) less that of the unburnt streams
+            gas_sensible = float(flame.sensible_input)
+            combustion = float(gas_in) - gas_sensible
+        else:
+            combustion, gas_sensible = float(release), float(gas_in)
+    else:
+        lhv = hhv = 0.0
+        combustion, gas_sensible = float(release), float(gas_in)
+    useful = to_solids + reaction_heat
+    supplied = lhv if lhv > 0 else gas_in - exhaust + release
+    total_in = solids_in + gas_sensible + combustion
+    total_out = solids_in + useful + shell_loss + exhaust
+    return {
+        "fuel_lhv_input_W": lhv,
+        "fuel_hhv_input_W": hhv,
+        "combustion_heat_W": combustion,
+        "sensible_input_gas_W": gas_sensible,
+        "sensible_input_solids_W": float(solids_in),
+        "heat_to_solids_sensible_W": float(to_solids),
+        "heat_to_solids_reaction_W": float(reaction_heat),
+        "shell_loss_W": float(shell_loss),
+        "exhaust_loss_W": float(exhaust),
+        "closure_W": total_in - total_out,
+        "closure_relative": (total_in - total_out) / max(abs(total_in), 1.0),
+        "thermal_efficiency": useful / supplied if supplied else float("nan"),
+    }
+
+
+def _residence_time(res: KilnResidual, geo, qb) -> float:
+    r"""Mean solids residence time, s: the kiln's L/v, or with the bed depth solved the integral
+    of hold-up over local mass flow, :math:`\int \rho_b A_{bed}/\dot m\,dz`."""
+    k = res.kiln
+    if res.depth is None:
+        return k.residence_time
+    m = np.maximum(0.5 * (qb[1:].sum(-1) + qb[:-1].sum(-1)), 1e-300)
+    return float(np.sum(k.bulk_density * geo.bed_area / m) * res.dz)
+
+
+def _continuation(res: KilnResidual):
+    """Reaction rates off (with radiation ramped 0 -> 1 if needed), then ramped 0 -> 1 in
+    adaptive steps."""
+
+    def set_reactions(value):
+        res.reaction_scale = value
+
+    def set_radiation(value):
+        res.radiation_scale = value
+        res.release_scale = value
+
+    radiation_ramp = steady.ramp(set_radiation)
+    reactions = steady.ramp(set_reactions, adaptive=True)
+
+    def run(F, x0, scale, kw):
+        set_reactions(0.0)
+        x, total = steady.newton_with_continuation(F, x0, scale, radiation_ramp, **kw)
+        x, more = reactions(F, x, scale, kw)
+        set_reactions(1.0)
+        return x, total + more
+
+    return run

@@ -21,10 +21,13 @@ import pandas as pd
 from scipy.optimize import brentq
 
 from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
-from rotarykiln.kiln.model import Closures, HeatKiln
+from rotarykiln.kiln.model import Closures, Kiln
 from rotarykiln.materials.gas import air_table
 from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.materials.solids import load_solid
+
+#: Dry air by mole, the gas of Tscheng's kiln.
+AIR = "O2:0.2095, N2:0.7808, AR:0.0097"
 
 __all__ = [
     "TSCHENG_LENGTH",
@@ -113,13 +116,13 @@ def _layers() -> tuple[Layer, ...]:
     )
 
 
-def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> HeatKiln:
-    """The :class:`HeatKiln` of Tscheng's run ``run`` (e.g. ``"A16"``) from its measured inputs.
+def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Kiln:
+    """The :class:`~rotarykiln.kiln.model.Kiln` of Tscheng's run ``run`` (e.g. ``"A16"``) from its measured inputs.
 
     Examples
     --------
     >>> k = tscheng_kiln("A16")
-    >>> round(k.gas_inlet_temperature, 1), round(k.solids_flow * 3600, 1)
+    >>> round(k.gas_inlet_temperature, 1), round(k.feed_flow * 3600, 1)
     (535.0, 14.2)
     """
     from rotarykiln.errors import InputError
@@ -139,7 +142,7 @@ def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Hea
         solid=load_solid("sand"),
         solids_flow=float(r["Solid flow (kg/hr)"]) / 3600.0,
         solids_inlet_temperature=AMBIENT,
-        gas=air_table(),
+        gas_composition=AIR,
         gas_flow=float(r["Air flow (kg/hr)"]) / 3600.0,
         gas_inlet_temperature=float(t_gas[-1]),
         layers=_layers(),
@@ -158,7 +161,7 @@ def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Hea
         name=f"Tscheng 1978 run {run}",
     )
     kw.update(overrides)
-    return HeatKiln(**kw)
+    return Kiln.inert(**kw)
 
 
 @dataclass(frozen=True)
@@ -194,17 +197,17 @@ def score_run(run: str, solution) -> RunScore:
         bed_all=_rmse(tb, m["t_bed"]),
         gas_all=_rmse(tg, m["t_gas"]),
         wall_all=_rmse(tw, m["t_wall"]),
-        closure=solution.balance_closure,
+        closure=solution.energy_closure,
         iterations=solution.iterations,
     )
 
 
 def validate_all(closures: Closures | None = None, n_cells: int = 100) -> pd.DataFrame:
     """Solve all 44 runs and score them: one row per run, RMSE in K."""
-    from rotarykiln.kiln.solve import solve_heat
+    from rotarykiln.kiln.solve import solve_kiln
 
     rows = []
     for run in load_tscheng_runs().index:
-        sol = solve_heat(tscheng_kiln(run, closures), n_cells)
+        sol = solve_kiln(tscheng_kiln(run, closures), n_cells)
         rows.append(score_run(run, sol).__dict__)
     return pd.DataFrame(rows).set_index("run")

@@ -304,6 +304,18 @@ class Solid:
         source = f"the c_p fit of {self.name}" + (f" ({self.cp_source})" if self.cp_source else "")
         return warn_out_of_range(f"{self.name} temperature [K]", T, rng[0], rng[1], source)
 
+    def phase_cp(self, T):
+        """Specific heat of the stable phase, J/(kg K), without a transition's latent bump: the
+        heat capacity the covered-wall contact (penetration) models take.
+
+        Examples
+        --------
+        >>> s = load_solid("sand")
+        >>> round(float(s.phase_cp(847.0)) / float(s.cp(847.0)), 2)  # the latent bump is left out
+        0.37
+        """
+        return self.cp(T, latent=False)
+
     def cp(self, T, *, latent=True, check=False):
         """Specific heat, J/(kg K), at ``T`` (K): the derivative of :meth:`enthalpy`.
 
