@@ -126,6 +126,18 @@ def runner_options(args, folder) -> dict:
     }
 
 
+def report_warnings(res, command: str) -> None:
+    """One stderr line: how many cases warned, and the first distinct message."""
+    if res.n_warned:
+        w = res.frame["warnings"].fillna("")
+        first = w[w != ""].iloc[0].split("; ")[0]
+        print(
+            f"rotarykiln {command}: {res.n_warned} of {len(res.frame)} cases raised warnings "
+            f"(column warnings), e.g. {first}",
+            file=sys.stderr,
+        )
+
+
 def _ranges(items: list[str], option: str) -> dict[str, list]:
     out: dict[str, list] = {}
     for item in items:
@@ -207,7 +219,7 @@ def run(args) -> int:
         cols = [
             c
             for c in res.frame.columns
-            if not c.endswith(" [SI]") and c not in ("elapsed_s", "hash")
+            if not c.endswith(" [SI]") and c not in ("elapsed_s", "hash", "warnings")
         ]
         print(res.frame[cols].to_string(index=False))
         print(
@@ -215,6 +227,7 @@ def run(args) -> int:
             f"{res.meta.get('reused', 0)} from the store), {res.n_failed} failed, "
             f"{res.wall_time:.2f} s ({res.executor})"
         )
+    report_warnings(res, "sweep")
     if res.n_failed:
         print(
             f"rotarykiln sweep: {res.n_failed} of {len(res.frame)} cases failed "

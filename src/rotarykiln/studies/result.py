@@ -108,7 +108,7 @@ class SweepResult:
         cols = ["case_id", "group"]
         for p in params:
             cols += [p, p + SI_SUFFIX]
-        cols += outputs + ["error", "elapsed_s", "hash"]
+        cols += outputs + ["error", "warnings", "elapsed_s", "hash"]
         frame = pd.DataFrame.from_records(list(records))
         for c in cols:
             if c not in frame:
@@ -122,6 +122,13 @@ class SweepResult:
     @property
     def n_failed(self) -> int:
         return int((self.frame["error"] != "").sum())
+
+    @property
+    def n_warned(self) -> int:
+        """Cases whose model raised warnings (column ``warnings``)."""
+        if "warnings" not in self.frame:
+            return 0
+        return int((self.frame["warnings"].fillna("") != "").sum())
 
     @property
     def failed(self) -> pd.DataFrame:

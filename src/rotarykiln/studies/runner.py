@@ -21,6 +21,7 @@ import signal
 import sys
 import time
 import traceback
+import warnings
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
@@ -47,13 +48,31 @@ def _scalar(v: Any) -> bool:
 def run_case(func: Callable, base: Mapping, spec: CaseSpec, create: bool = False) -> dict:
     """Run one case; never raises: failures are returned in the ``error`` field.
 
+    Warnings raised by the model are recorded (each distinct message once) in ``warnings``,
+    not printed: a study of thousands of cases would otherwise flood the terminal.
+
     Returns
     -------
     dict
-        ``case_id``, ``group``, ``outputs`` (dict), ``error`` (str, "" if fine), ``elapsed_s``.
+        ``case_id``, ``group``, ``outputs`` (dict), ``error`` (str, "" if fine), ``warnings``
+        (str), ``elapsed_s``.
     """
     t0 = time.perf_counter()
     row = {"case_id": spec.case_id, "group": spec.group, "outputs": {}, "error": ""}
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _run_into(row, func, base, spec, create)
+    seen: list[str] = []
+    for w in caught:
+        text = f"{w.category.__name__}: {w.message}".replace("\n", " ")
+        if text not in seen:
+            seen.append(text)
+    row["warnings"] = "; ".join(seen)
+    row["elapsed_s"] = time.perf_counter() - t0
+    return row
+
+
+def _run_into(row: dict, func: Callable, base: Mapping, spec: CaseSpec, create: bool) -> None:
     try:
         case = with_values(base, spec.values, create=create)
         out = func(case)
@@ -76,8 +95,6 @@ def run_case(func: Callable, base: Mapping, spec: CaseSpec, create: bool = False
         tb = traceback.extract_tb(exc.__traceback__)
         where = f" ({tb[-1].name}:{tb[-1].lineno})" if tb else ""
         row["error"] = f"{type(exc).__name__}: {exc}{where}".replace("\n", " ")
-    row["elapsed_s"] = time.perf_counter() - t0
-    return row
 
 
 def _run_chunk(func, base, specs, create):
@@ -91,6 +108,7 @@ def _failed_rows(specs, message: str) -> list[dict]:
             "group": c.group,
             "outputs": {},
             "error": message,
+            "warnings": "",
             "elapsed_s": float("nan"),
         }
         for c in specs
@@ -289,6 +307,7 @@ def _record(row: dict, spec: CaseSpec, h: str, base_values: Mapping) -> dict:
     outs = row["outputs"]
     rec.update(outs)
     rec["error"] = row["error"]
+    rec["warnings"] = row.get("warnings") or ""
     rec["elapsed_s"] = row["elapsed_s"]
     rec["output_names"] = ",".join(outs)
     return rec
@@ -485,6 +504,7 @@ def run_sweep(
             row = {
                 "outputs": {n: rec.get(n) for n in names},
                 "error": rec.get("error") or "",
+                "warnings": rec.get("warnings") or "",
                 "elapsed_s": rec.get("elapsed_s", float("nan")),
             }
             records[rec["hash"]] = row
@@ -496,6 +516,7 @@ def run_sweep(
             if "output_names" in r
             else r["outputs"],
             "error": r["error"],
+            "warnings": r.get("warnings") or "",
             "elapsed_s": r["elapsed_s"],
         }
         frame_rows.append(_record(row, by_id[c.case_id], hashes[c.case_id], base_values))
@@ -504,6 +525,6 @@ def run_sweep(
         params,
         wall_time=wall,
         executor=executor,
-        meta={"ran": len(unique), "reused": reused},
+        meta={"ran": len(unique), "reused": reused, "store": str(st.folder) if st else None},
     )
     return res

@@ -26,7 +26,15 @@ from rotarykiln.errors import InputError
 __all__ = ["ResultStore", "case_hash", "FIXED_COLUMNS"]
 
 #: Columns of every stored row besides parameters and outputs.
-FIXED_COLUMNS = ("hash", "case_id", "group", "error", "elapsed_s", "output_names")
+FIXED_COLUMNS = (
+    "hash",
+    "case_id",
+    "group",
+    "error",
+    "warnings",
+    "elapsed_s",
+    "output_names",
+)
 
 _counter = itertools.count()
 
