@@ -199,8 +199,12 @@ class KilnResidual:
         return self.exchange_of(geo).coefficients(gas, tg, tb, tw, check=check)
 
     # --- chemistry ------------------------------------------------------------------------------
-    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo=None):
-        """Production (..., n, n_species) kg/(s m) and heat absorbed (..., n) W/m."""
+    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo=None, tb_out=None):
+        """Production (..., n, n_species) kg/(s m) and heat absorbed (..., n) W/m.
+
+        ``tb_out``: bed temperature at each cell's solids outlet face (K), for rate laws that
+        hold the bed at a phase change (boiling drying); the cell mean when not given.
+        """
         k = self.kiln
         geo = geo or self.grid
         shape = tb.shape
@@ -224,6 +228,9 @@ class KilnResidual:
             "drying_conductance": np.broadcast_to(h_gb * geo.chord, shape).reshape(flat),
             "bed_heat_input": q_bed_in.reshape(flat),
             "freeboard_area": np.broadcast_to(geo.freeboard_area, shape).reshape(flat),
+            "bed_outlet_temperature": np.broadcast_to(
+                tb if tb_out is None else tb_out, shape
+            ).reshape(flat),
         }
         st = ChemState(
             np.maximum(tb, T_FLOOR).reshape(flat),
@@ -262,7 +269,14 @@ class KilnResidual:
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
         prod, heat, rate, heat_gas, prod_gp = self.rates(
-            tb, tg, qb[..., 1:, :], qg[..., self.gas_out, :], q_bed_in, co["h_gb"], geo
+            tb,
+            tg,
+            qb[..., 1:, :],
+            qg[..., self.gas_out, :],
+            q_bed_in,
+            co["h_gb"],
+            geo,
+            tbn[..., 1:],
         )
         w_bed = prod[..., self.bed_idx]
         w_gas = prod[..., self.gas_idx]
