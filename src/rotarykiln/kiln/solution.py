@@ -215,15 +215,25 @@ class KilnSolution:
         return pd.DataFrame(data)
 
     def plot(self, ax=None):
-        """Temperatures (left) and solids and gas flows (right); returns the Figure."""
+        """Temperatures (left) and, when the bed reacts, solids and gas flows (right); returns
+        the Figure."""
         import matplotlib.pyplot as plt
 
+        reacting = bool(self.reaction_rates)
         if ax is None:
-            fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+            fig, ax = plt.subplots(
+                1, 2 if reacting else 1, figsize=(11, 4.2) if reacting else (7, 4.2)
+            )
         else:
             fig = np.atleast_1d(ax)[0].figure
-        a0, a1 = np.atleast_1d(ax)[:2]
-        plot_temperature_profiles(self, a0, t_shell=self.t_shell, measurements=self.measurements)
+        axes = np.atleast_1d(ax)
+        plot_temperature_profiles(
+            self, axes[0], t_shell=self.t_shell, measurements=self.measurements
+        )
+        if not reacting or len(axes) < 2:
+            fig.tight_layout()
+            return fig
+        a1 = axes[1]
         for s, q in self.bed_flows.items():
             if np.ptp(q) > 0 or q[0] > 0:
                 a1.plot(self.z_nodes, q * 1e3, label=f"bed {s}")
@@ -232,7 +242,7 @@ class KilnSolution:
                 a1.plot(self.z_nodes, q * 1e3, ls="--", label=f"gas {s}")
         a1.set_xlabel("z from solids inlet (m)")
         a1.set_ylabel("mass flow (g/s)")
-        a1.set_title(f"burn-off {self.burn_off:.2f} % (dry)")
+        a1.set_title(f"dry solids mass loss {self.burn_off:.2f} %")
         a1.legend(fontsize=7, ncol=2)
         fig.tight_layout()
         return fig
