@@ -1,9 +1,13 @@
-"""``rotarykiln sensitivity``: Sobol or Morris indices of one scalar output of a model.
+"""``rotarykiln sensitivity``: Sobol or Morris indices of one scalar output of a model, or
+Monte Carlo uncertainty bands (``--method uncertainty``).
 
 The parameters are case fields with distributions (``--param PATH=DIST(ARGS)``: uniform,
 normal, lognormal, triangular); the cases run on local processes or Dask and are stored in
 OUT/runs (a second run resumes). Writes OUT/indices.csv, OUT/indices.json and the tornado chart
-OUT/sensitivity.png.
+OUT/sensitivity.png. With ``--method uncertainty`` (no ``--output``): the nominal case and N
+Latin-hypercube samples; OUT/scalars.csv (nominal, mean, sd, 5-50-95 % of every scalar output),
+OUT/bands.csv and OUT/uncertainty.png (5-95 % bands of the axial profiles around the nominal;
+use ``--model heat_profiles``).
 
 Example::
 
@@ -12,6 +16,9 @@ Example::
         --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" \\
         --param "heat.gas.flow=uniform(20 kg/h, 30 kg/h)" \\
         --output bed_outlet_temperature_K --n 64 --out sens/
+
+    rotarykiln sensitivity heat/tscheng_A16 --model heat_profiles --method uncertainty \\
+        --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" --n 100 --out unc/
 """
 
 from __future__ import annotations
@@ -30,6 +37,7 @@ from rotarykiln.errors import InputError
 from rotarykiln.outputs import write_frame_atomic, write_json_atomic
 from rotarykiln.studies.design import as_params
 from rotarykiln.studies.sensitivity import METHODS, morris_indices, sobol_indices
+from rotarykiln.studies.uncertainty import propagate
 
 __all__ = ["register", "run"]
 
@@ -43,13 +51,14 @@ def register(sub) -> None:
     )
     p.add_argument("case", help="case YAML file or built-in case name")
     p.add_argument("--model", required=True, help="heat, transport or module:function")
-    p.add_argument("--method", choices=METHODS, default="sobol")
-    p.add_argument("--output", required=True, help="name of the scalar output analysed")
+    p.add_argument("--method", choices=(*METHODS, "uncertainty"), default="sobol")
+    p.add_argument("--output", help="name of the scalar output analysed (sobol, morris)")
     p.add_argument(
         "--n",
         type=int,
         default=64,
-        help="Sobol: base sample (cases = n (d + 2)); Morris: trajectories (n (d + 1))",
+        help="Sobol: base sample (cases = n (d + 2)); Morris: trajectories (n (d + 1)); "
+        "uncertainty: samples",
     )
     p.add_argument("--levels", type=int, default=4, help="Morris grid levels")
     add_study_options(p)
@@ -66,6 +75,10 @@ def run(args) -> int:
     func = _load_model(args.model)
     folder = out_dir(args.out, "sensitivity")
     opts = runner_options(args, folder)
+    if args.method == "uncertainty":
+        return _uncertainty(args, func, base, params, folder, opts)
+    if not args.output:
+        raise InputError("--output", "none", f"given with --method {args.method}")
     if args.method == "sobol":
         res = sobol_indices(func, base, params, args.output, args.n, seed=args.seed, **opts)
     else:
@@ -95,5 +108,33 @@ def run(args) -> int:
         print(
             f"{res.method} indices of {res.output} from {len(res.sweep.frame)} cases "
             f"({res.sweep.meta.get('reused', 0)} from the store){extra}; written to {folder}/"
+        )
+    return 0
+
+
+def _uncertainty(args, func, base, params, folder, opts) -> int:
+    res = propagate(func, base, params, args.n, seed=args.seed, **opts)
+    report_warnings(res.sweep, "sensitivity")
+    scalars = res.scalars()
+    write_frame_atomic(folder / "scalars.csv", scalars)
+    if res.quantities:
+        write_frame_atomic(folder / "bands.csv", res.to_frame())
+        res.save_plot(folder / "uncertainty.png")
+    summary = {
+        "method": "uncertainty",
+        "cases": len(res.samples),
+        "failed": res.n_failed,
+        "parameters": [str(p) for p in res.params],
+        "profiles": res.quantities,
+        "scalars": scalars.to_dict(orient="records"),
+    }
+    write_json_atomic(folder / "uncertainty.json", summary)
+    if args.json:
+        print_json(summary)
+    else:
+        print(scalars.to_string(index=False, float_format=lambda v: f"{v:.5g}"))
+        print(
+            f"Monte Carlo over {len(res.samples)} samples ({res.n_failed} failed); "
+            f"profiles: {', '.join(res.quantities) or 'none'}; written to {folder}/"
         )
     return 0

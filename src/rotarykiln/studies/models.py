@@ -8,7 +8,17 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
-__all__ = ["MODELS", "heat_model", "transport_model"]
+__all__ = [
+    "MODELS",
+    "PROFILE_POINTS",
+    "heat_model",
+    "heat_profile_model",
+    "profile_columns",
+    "transport_model",
+]
+
+#: Positions of the axial profiles of :func:`heat_profile_model` (evenly spaced, ends included).
+PROFILE_POINTS = 41
 
 
 def _scalars(summary: Mapping) -> dict:
@@ -24,6 +34,58 @@ def heat_model(case: dict) -> dict:
     summary = run_heat_case(parse_case(case)).summary()
     summary.pop("name", None)
     return _scalars(summary)
+
+
+def heat_profile_model(case: dict) -> dict:
+    """Steady heat model: the summary of :func:`heat_model` plus the axial profiles as scalars.
+
+    Profiles at :data:`PROFILE_POINTS` evenly spaced positions z (m, from the solids inlet),
+    named ``"<quantity>@<z>"`` with quantities ``bed_temperature``, ``gas_temperature``,
+    ``wall_temperature`` (inner wall surface) and ``shell_temperature`` (lined walls), in K:
+    e.g. ``"bed_temperature@1.2200"``. Uncertainty bands and calibration read these columns
+    (see :func:`profile_columns`).
+    """
+    import numpy as np
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.kiln.run import run_heat_case
+
+    sol = run_heat_case(parse_case(case))
+    summary = sol.summary()
+    summary.pop("name", None)
+    out = _scalars(summary)
+    z = np.linspace(float(sol.z_nodes[0]), float(sol.z_nodes[-1]), PROFILE_POINTS)
+    profiles = {
+        "bed_temperature": sol.bed_temperature_at(z),
+        "gas_temperature": sol.gas_temperature_at(z),
+        "wall_temperature": sol.wall_temperature_at(z, 0),
+    }
+    if getattr(sol, "t_lining", None) is not None and len(sol.t_lining) > 1:
+        profiles["shell_temperature"] = sol.wall_temperature_at(z, -1)
+    for q, values in profiles.items():
+        for zi, v in zip(z, values, strict=True):
+            out[f"{q}@{zi:.4f}"] = float(v)
+    return out
+
+
+def profile_columns(names) -> dict[str, list[tuple[float, str]]]:
+    """Profile columns among output names: quantity -> [(z in m, column name)], z ascending.
+
+    Examples
+    --------
+    >>> profile_columns(["bed_temperature@0.5000", "fill", "bed_temperature@0.0000"])
+    {'bed_temperature': [(0.0, 'bed_temperature@0.0000'), (0.5, 'bed_temperature@0.5000')]}
+    """
+    out: dict[str, list[tuple[float, str]]] = {}
+    for n in names:
+        q, sep, z = str(n).rpartition("@")
+        if not sep or not q:
+            continue
+        try:
+            out.setdefault(q, []).append((float(z), n))
+        except ValueError:
+            continue
+    return {q: sorted(v) for q, v in out.items()}
 
 
 def transport_model(case: dict) -> dict:
@@ -42,6 +104,7 @@ def transport_model(case: dict) -> dict:
 
 MODELS: dict[str, Callable[[dict], dict]] = {
     "heat": heat_model,
+    "heat_profiles": heat_profile_model,
     "transport": transport_model,
 }
 """Model name -> function, for ``rotarykiln sweep --model NAME``."""
