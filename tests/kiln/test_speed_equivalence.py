@@ -2,7 +2,8 @@
 1e-6 K in temperature and 1e-9 (relative to the stream) in flow, the reference values below.
 
 The reference values were computed with commit 1063545 (before the speed work: scipy evaluation
-of the gas tables, loop-built Jacobian, linear initial guess), 100 cells.
+of the gas tables, loop-built Jacobian, linear initial guess), 100 cells. The grid-sequenced
+Newton start (:func:`rotarykiln.kiln.steady.newton_sequenced`) reaches the same solution.
 """
 
 import warnings
@@ -12,9 +13,17 @@ import pytest
 
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
+from rotarykiln.kiln import steady
 from rotarykiln.kiln.reacting import reacting_kiln_from_case
+from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.run import heat_kiln_from_case
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.solve import (
+    SPECIES_STEP_FLOOR,
+    _continuation,
+    _initial_guess,
+    _reference_heat,
+    solve_kiln,
+)
 
 HEAT_UNIFIED_ATOL = 1.0  # K, see test_heat_solution_unchanged_by_the_speed_work
 T_ATOL = 1e-6  # K
@@ -250,3 +259,55 @@ def test_heat_solution_unchanged_by_the_speed_work(name):
     np.testing.assert_allclose(sol.t_gas_nodes[CELLS], ref["t_gas_nodes"], rtol=0, atol=atol)
     np.testing.assert_allclose(sol.t_wall[CELLS], ref["t_wall"], rtol=0, atol=atol)
     np.testing.assert_allclose(sol.t_shell[CELLS], ref["t_shell"], rtol=0, atol=atol)
+
+
+# --- grid sequencing (steady.newton_sequenced) --------------------------------------------------
+
+
+def _fired_residual(n):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path("limestone_fired")))
+    res = KilnResidual(kiln, n)
+    res.q_ref = _reference_heat(res)
+    return kiln, res
+
+
+def test_interpolating_unknowns_onto_their_own_grid_changes_nothing():
+    kiln, res = _fired_residual(40)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        x = solve_kiln(kiln, 40).fluxes["x"]
+    y = steady.interpolate_unknowns(res, x, res)
+    # the same state (a sqrt-scaled unknown may change sign: its flow is its square)
+    for a, b in zip(res.faces(y), res.faces(x), strict=True):
+        np.testing.assert_allclose(a, b, rtol=1e-13, atol=1e-13)
+    np.testing.assert_allclose(y[:, 2 : res.i_species], x[:, 2 : res.i_species], rtol=1e-13)
+
+
+def test_grid_sequenced_newton_reaches_the_reference_in_a_few_fine_iterations():
+    kiln, res = _fired_residual(100)
+
+    def make_residual(n):
+        coarse = KilnResidual(kiln, n)
+        coarse.q_ref = res.q_ref
+        return coarse
+
+    i0 = res.i_species
+    floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
+    kw = dict(tol=1e-11, max_iter=60, temperature_vars=i0, step_floor=floor)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        x, iterations = steady.newton_sequenced(
+            res,
+            _initial_guess(res),
+            res.q_ref,
+            _continuation(res),
+            make_residual=make_residual,
+            **kw,
+        )
+    assert iterations <= 8  # from the linear guess: 21-23
+    tb, tg, _, _ = res.faces(x)
+    ref = REACTING["limestone_fired"]
+    np.testing.assert_allclose(tb[FACES], ref["t_bed_nodes"], rtol=0, atol=T_ATOL)
+    np.testing.assert_allclose(tg[FACES], ref["t_gas_nodes"], rtol=0, atol=T_ATOL)
