@@ -101,8 +101,9 @@ def test_mesh_doubling_changes_profiles_by_less_than_2_K():
 
 
 def test_co_current_variant_converges():
-    for t in TRIALS:
-        data = yaml.safe_load(builtin_case_path(f"heat/barr_{t}").read_text())
+    # every built-in fired heat case (the fired limestone kiln: tests/kiln/test_fired_reacting.py)
+    for name in [f"heat/barr_{t}" for t in TRIALS] + ["heat/ubc_pilot_flame"]:
+        data = yaml.safe_load(builtin_case_path(name).read_text())
         data["heat"]["counter_current"] = False
         sol = run_heat_case(parse_case(data))
         assert abs(sol.energy_closure) < 1e-6
