@@ -113,6 +113,8 @@ class GasMixture:
         cp_fit = PiecewisePolynomials(T_GRID, cp)
         ends = cp_fit.evaluate(*cp_fit.interval(np.array([T_MIN, T_MAX])))
         has_table = np.array([tab is not None for tab in self._tables], dtype=float)
+        # transport weights: mole fraction (conductivity), x sqrt(M) (viscosity), tables only
+        has_table = np.stack([has_table, has_table * np.sqrt(self.molar_mass)])
         return (
             cp_fit,
             PiecewisePolynomials(T_GRID, h),
@@ -130,11 +132,10 @@ class GasMixture:
         T = np.asarray(T, dtype=float)
         _, h, _, cp_lo, cp_hi, _ = self._fits
         out = h.evaluate(*self._interval(T))
-        # linear extension outside the tables, as GasPropertyTable.enthalpy
-        below = np.minimum(T - T_MIN, 0.0)[..., None]
-        above = np.maximum(T - T_MAX, 0.0)[..., None]
-        out += cp_lo * below
-        out += cp_hi * above
+        # linear extension outside the tables, as GasPropertyTable.enthalpy (NaN goes this way)
+        if not (T.size and T_MIN <= T.min() and T.max() <= T_MAX):
+            out += cp_lo * np.minimum(T - T_MIN, 0.0)[..., None]
+            out += cp_hi * np.maximum(T - T_MAX, 0.0)[..., None]
         return out
 
     def species_cp(self, T) -> np.ndarray:
@@ -162,18 +163,19 @@ class GasMixture:
         ``viscosity=False`` only the conductivity (W/(m K)) is returned."""
         T = np.asarray(T, dtype=float)
         n = len(self.names)
-        _, _, tr, _, _, has_table = self._fits
+        _, _, tr, _, _, weights = self._fits
         props = tr.evaluate(*self._interval(T))  # (..., 2n): conductivities, viscosities
-        xt = x * has_table
+        xt = x * weights[0]
         wsum = xt.sum(-1)
         k = np.einsum("...i,...i->...", xt, props[..., :n])
-        k = k / np.where(wsum > 0, wsum, 1.0)
+        k /= np.where(wsum > 0, wsum, 1.0)
         if not viscosity:
             return k
-        xs = xt * np.sqrt(self.molar_mass)
+        xs = x * weights[1]
         den = xs.sum(-1)
         num = np.einsum("...i,...i->...", xs, props[..., n:])
-        return k, num / np.where(den > 0, den, 1.0)
+        num /= np.where(den > 0, den, 1.0)
+        return k, num
 
     def mean_molar_mass(self, mass) -> np.ndarray:
         """Mean molar mass, kg/mol, from mass flows or fractions on the last axis."""
