@@ -12,6 +12,7 @@ residual norm and limited to ``max_step`` kelvin per unknown.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from scipy.linalg import solve_banded
@@ -31,27 +32,46 @@ class NewtonReport:
     jacobian_evaluations: int
 
 
+@lru_cache(maxsize=16)
+def _jacobian_pattern(n: int, nv: int):
+    """Flat indices of the coloured FD Jacobian of ``n`` cells of ``nv`` unknowns.
+
+    ``perturbed``: the entries of the batch ``X[c, v, j, w]`` (colour ``c = j mod 3``,
+    variable ``v``) that carry the step; ``src``, ``dst``, ``step``: for every band entry
+    d R[r, w] / d x[j, v] (``r = j - 1, j, j + 1``), its place in the flattened residual
+    differences ``dR[c, v, r, w]``, in the flattened banded matrix (``solve_banded`` layout,
+    ``ab[bw + r nv + w - j nv - v, j nv + v]``) and in the flattened steps ``h[j, v]``.
+    """
+    cells = np.arange(n)
+    var = np.arange(nv)
+    colour = cells % 3
+    perturbed = ((colour[:, None] * nv + var[None, :]) * n + cells[:, None]) * nv + var[None, :]
+    size = n * nv
+    bw = 2 * nv - 1
+    src, dst, step = [], [], []
+    for off in (-1, 0, 1):
+        j = cells[max(0, -off) : n - max(0, off)][:, None, None]
+        v = var[None, :, None]
+        w = var[None, None, :]
+        c = j % 3
+        src.append((((c * nv + v) * n + (j + off)) * nv + w).ravel())
+        dst.append(((bw + off * nv + w - v) * size + (j * nv + v)).ravel())
+        step.append(np.broadcast_to(j * nv + v, (j.shape[0], nv, nv)).ravel())
+    return perturbed.ravel(), np.concatenate(src), np.concatenate(dst), np.concatenate(step)
+
+
 def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
     n, nv = x.shape
     ncol = 3 * nv
     h = rel_step * np.maximum(np.abs(x), step_floor)
-    cells = np.arange(n)
-    var = np.arange(nv)
-    colour = cells % 3
+    perturbed, src, dst, step = _jacobian_pattern(n, nv)
     # colour (c, v) perturbs variable v of the cells j = c mod 3: X[c, v, j, v] = x[j, v] + h
-    X = np.broadcast_to(x, (3, nv, n, nv)).copy()
-    X[colour[:, None], var[None, :], cells[:, None], var[None, :]] = x + h
-    dR = (F(X.reshape(ncol, n, nv)) - R0).reshape(3, nv, n, nv)  # [c, v, row cell, equation]
-    size = n * nv
+    X = np.broadcast_to(x, (ncol, n, nv)).copy()
+    X.ravel()[perturbed] = (x + h).ravel()
+    dR = F(X) - R0  # [c, v, row cell, equation]
     bw = 2 * nv - 1
-    ab = np.zeros((2 * bw + 1, size))
-    # d R[r, w] / d x[j, v] for the column cells j and row cells r = j + off
-    for off in (-1, 0, 1):
-        j = cells[max(0, -off) : n - max(0, off)]
-        vals = dR[colour[j], :, j + off, :] / h[j, :, None]  # [j, v, w]
-        rows = bw + off * nv + var[None, None, :] - var[None, :, None]
-        cols = (j[:, None] * nv + var[None, :])[:, :, None]
-        ab[rows, cols] = vals
+    ab = np.zeros((2 * bw + 1, n * nv))
+    ab.ravel()[dst] = dR.ravel()[src] / h.ravel()[step]
     return ab, bw
 
 
