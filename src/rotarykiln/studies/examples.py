@@ -22,7 +22,15 @@ __all__ = [
     "sleepy_square",
     "crash_once",
     "trivial_model",
+    "exponential_heating",
+    "EXPONENTIAL_CASE",
 ]
+
+#: Base case of :func:`exponential_heating` (a bed heated by gas at a fixed temperature).
+EXPONENTIAL_CASE = {
+    "kiln": {"length": "2 m"},
+    "heat": {"gas_temperature": "700 K", "inlet_temperature": "300 K", "exchange": "0.6 1/m"},
+}
 
 
 def first_order_conversion(case: dict) -> dict:
@@ -135,3 +143,34 @@ def crash_once(case: dict) -> dict:
 def trivial_model(case: dict) -> dict:
     """Returns ``{"y": x}`` at once: measures the runner's own overhead per case."""
     return {"y": case["x"]}
+
+
+def exponential_heating(case: dict) -> dict:
+    r"""Bed heated by gas at a fixed temperature: :math:`T(z) = T_g - (T_g - T_0) e^{-k z}`.
+
+    A cheap stand-in for a kiln profile model in calibration tests. Fields: ``kiln.length``,
+    ``heat.gas_temperature``, ``heat.inlet_temperature``, ``heat.exchange`` (k, 1/m).
+    Returns ``bed_temperature@<z>`` at 21 positions (K) and ``bed_outlet_temperature_K``.
+
+    Examples
+    --------
+    >>> round(exponential_heating(EXPONENTIAL_CASE)["bed_outlet_temperature_K"], 1)
+    579.5
+    """
+    import numpy as np
+
+    L = to_si("kiln.length", case["kiln"]["length"], "length")
+    h = case["heat"]
+    tg = to_si("heat.gas_temperature", h["gas_temperature"], "temperature")
+    t0 = to_si("heat.inlet_temperature", h["inlet_temperature"], "temperature")
+    k = h["exchange"]
+    if isinstance(k, str):
+        from rotarykiln.units import ureg
+
+        k = ureg.Quantity(k).to("1/m").magnitude
+    k = float(k)
+    z = np.linspace(0.0, L, 21)
+    t = tg - (tg - t0) * np.exp(-k * z)
+    out = {f"bed_temperature@{zi:.4f}": float(ti) for zi, ti in zip(z, t, strict=True)}
+    out["bed_outlet_temperature_K"] = float(t[-1])
+    return out
