@@ -198,7 +198,7 @@ def _burner_gas(section, kiln_section):
     """Flame, inlet gas species flows (kg/s) and temperature (K) of a ``chemistry.burner``.
 
     Instant burn-out: the products of complete combustion at their adiabatic temperature.
-    Product species the reacting kiln does not carry (traces of NO, OH, Ar ...) are counted
+    Product species the reacting kiln does not carry (traces of NO, OH ...) are counted
     as N2, by mass (their sum is reported by the flame's products; below 0.1 % for
     natural gas with air).
     """

@@ -140,7 +140,8 @@ def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: i
     gas = sol.gas_flows
     names = list(gas)
     mm = np.array([kiln.mechanism.species[s].molar_mass for s in names])
-    moles = np.array([gas[s][:-1] for s in names]).T / mm
+    out = slice(None, -1) if kiln.counter_current else slice(1, None)  # each cell's gas outlet
+    moles = np.array([gas[s][out] for s in names]).T / mm
     x = moles / moles.sum(-1, keepdims=True)
     pp = {s: (z, kiln.pressure * x[:, i]) for i, s in enumerate(names)}
     inputs = {
@@ -151,7 +152,7 @@ def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: i
         ),
         "steam_mass_flow": kiln.steam_flow
         if kiln.steam_flow is not None
-        else (z, gas.get("H2O", np.zeros(len(z) + 1))[:-1]),
+        else (z, gas.get("H2O", np.zeros(len(z) + 1))[out]),
     }
     t_max = rtd.mean + 8 * np.sqrt(rtd.variance)
     res = kiln_segregated_conversion(
