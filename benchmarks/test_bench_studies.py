@@ -1,9 +1,18 @@
-"""Overhead of a 100-case sweep in local processes (2 cores) with a cheap model."""
+"""Study runner speed (issue 13): overhead per case with a trivial model, and a 1,000-case
+heat-model sweep on 2 local workers. Targets: overhead <= 2 ms per case; the sweep <= 60 s."""
 
+import tempfile
+
+import yaml
+
+from rotarykiln.cases import builtin_case_path
 from rotarykiln.studies import grid, run_sweep
-from rotarykiln.studies.examples import first_order_conversion
+from rotarykiln.studies.design import latin_hypercube
+from rotarykiln.studies.examples import first_order_conversion, trivial_model
+from rotarykiln.studies.models import heat_model
 
 BASE = {"reaction": {"rate_constant": "0.01 1/s"}, "operation": {"residence_time": "100 s"}}
+N_TRIVIAL = 2000
 
 
 def test_bench_sweep_100_cases_2_processes(benchmark):
@@ -21,3 +30,48 @@ def test_bench_sweep_100_cases_2_processes(benchmark):
         iterations=1,
     )
     assert len(res.frame) == 100 and res.n_failed == 0
+
+
+def _overhead(benchmark, executor, **kwargs):
+    design = grid({"x": [float(i) for i in range(N_TRIVIAL)]})
+
+    def run():  # a fresh store each round: every case runs and is written
+        return run_sweep(
+            trivial_model,
+            {"x": 0.0},
+            design,
+            executor=executor,
+            store=tempfile.mkdtemp(),
+            **kwargs,
+        )
+
+    res = benchmark.pedantic(run, rounds=3, iterations=1)
+    benchmark.extra_info["ms_per_case"] = benchmark.stats.stats.median / N_TRIVIAL * 1e3
+    assert len(res.frame) == N_TRIVIAL and res.n_failed == 0
+
+
+def test_bench_runner_overhead_2000_trivial_cases_serial_with_store(benchmark):
+    _overhead(benchmark, "serial")
+
+
+def test_bench_runner_overhead_2000_trivial_cases_2_processes_with_store(benchmark):
+    _overhead(benchmark, "process", max_workers=2)
+
+
+def test_bench_heat_sweep_1000_cases_2_processes(benchmark):
+    base = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    design = latin_hypercube(
+        [
+            "operation.speed=uniform(1 rpm, 3 rpm)",
+            "heat.gas.inlet_temperature=uniform(500 K, 570 K)",
+            "heat.gas.flow=uniform(20 kg/h, 30 kg/h)",
+        ],
+        1000,
+        seed=1,
+    )
+    res = benchmark.pedantic(
+        lambda: run_sweep(heat_model, base, design, max_workers=2, store=tempfile.mkdtemp()),
+        rounds=1,
+        iterations=1,
+    )
+    assert len(res.frame) == 1000 and res.n_failed == 0

@@ -21,6 +21,9 @@ __all__ = [
     "ahmad_chapter5_design",
     "builtin_case",
     "chapter5_directions",
+    "chapter5_params",
+    "chapter5_sobol",
+    "oat_ranking",
     "run_chapter5",
 ]
 
@@ -127,3 +130,52 @@ def chapter5_directions(result, output: str = "burn_off_percent", threshold: flo
         sign = 0 if abs(change) < threshold else int(np.sign(change))
         out[path] = (sign, change, first, last)
     return out
+
+
+def chapter5_params(ranges: dict | None = None) -> list[str]:
+    """The chapter-5 ranges as uniform distributions from their lowest to their highest value.
+
+    Examples
+    --------
+    >>> chapter5_params()[0]
+    'chemistry.residence_time=uniform(2000 s, 10000 s)'
+    """
+    from rotarykiln.studies.design import si_value
+
+    out = []
+    for path, values in (ranges or CHAPTER5_RANGES).items():
+        lo, hi = min(values, key=si_value), max(values, key=si_value)
+        out.append(f"{path}=uniform({lo}, {hi})")
+    return out
+
+
+def chapter5_sobol(n: int = 32, seed: int = 0, **runner):
+    """Sobol indices of burn-off over the chapter-5 ranges on the reacting kiln model.
+
+    ``n (d + 2)`` = 7 n cases (d = 5 parameters); ``runner`` goes to
+    :func:`~rotarykiln.studies.sensitivity.sobol_indices` (``max_workers``, ``store``...).
+    Returns the :class:`~rotarykiln.studies.sensitivity.SensitivityResult`.
+    """
+    from rotarykiln.kiln.reacting import reacting_sweep_model
+    from rotarykiln.studies.sensitivity import sobol_indices
+
+    return sobol_indices(
+        reacting_sweep_model,
+        builtin_case("charcoal_activation"),
+        chapter5_params(),
+        "burn_off_percent",
+        n,
+        seed=seed,
+        **runner,
+    )
+
+
+def oat_ranking(result, output: str = "burn_off_percent") -> list[str]:
+    """Parameters of a one-at-a-time study ranked by the spread (max - min) of ``output``."""
+    frame = result.frame
+    spread = {}
+    for path in CHAPTER5_RANGES:
+        rows = frame[frame["group"].isin([path, "base"])]
+        if len(rows):
+            spread[path] = float(rows[output].max() - rows[output].min())
+    return sorted(spread, key=spread.get, reverse=True)
