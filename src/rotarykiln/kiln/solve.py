@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
+from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln import steady
 from rotarykiln.kiln.model import Kiln
@@ -17,6 +18,8 @@ __all__ = ["solve_kiln", "energy_sheet", "ENERGY_RTOL"]
 ENERGY_RTOL = 1e-6
 #: Floor of the finite-difference step of the scaled species unknowns (flow / inlet flow).
 SPECIES_STEP_FLOOR = 1e-6
+#: Bed temperature (K) above which the initial guess holds no liquid water (boiling drying).
+BOILING_GUESS = 373.15
 #: Grid sequencing (steady.newton_sequenced) for kilns with reactions, and for inert kilns
 #: above this many cells (below it the linear guess converges in ~7 Newton steps anyway).
 SEQUENCE_INERT_MIN = 200
@@ -45,6 +48,14 @@ def _initial_guess(res: KilnResidual) -> np.ndarray:
     x[:, 2:i0] = t_wall
     xb = res.bed_in[res.bed_pos] / res.bed_scale
     x[:, i0 : i0 + res.nb] = np.where(res.sqrt_mask, np.sqrt(xb), xb)
+    if MOISTURE in res.bed_var and any(
+        r.law.name == "boiling_drying" for r in k.mechanism.reactions
+    ):
+        # a bed held at its boiling point has no liquid water above it: start dry there
+        j = res.bed_var.index(MOISTURE)
+        hot = t_b > BOILING_GUESS
+        dry = 1e-4 * xb[j]
+        x[hot, i0 + j] = np.sqrt(dry) if res.sqrt_mask[j] else dry
     x[:, i0 + res.nb : i0 + res.nb + res.ng] = res.gas_inlet[res.gas_pos] / res.gas_scale
     if res.depth is not None:
         x[:, res.i_depth] = res.depth.initial_depth(k.length, res.z_nodes[:-1], k.feed_flow)
