@@ -34,6 +34,20 @@ def test_calcines_fully_and_its_co2_leaves_with_the_flue_gas(solution):
     assert abs(co2_out["element_balance_closure"]) < 1e-8
 
 
+def test_energy_sheet_of_the_fired_limestone_kiln(solution):
+    s = solution.summary()
+    # 12 Nm3/h of natural gas: about 125 kW LHV; the sheet closes and splits the heat to the
+    # solids into sensible heat and the heat of calcination
+    assert 1.1e5 < s["energy_fuel_lhv_input_W"] < 1.4e5
+    assert s["energy_fuel_hhv_input_W"] > s["energy_fuel_lhv_input_W"]
+    assert abs(s["energy_closure_relative"]) < 1e-6
+    assert s["energy_heat_to_solids_reaction_W"] > 0.1 * s["energy_heat_to_solids_sensible_W"]
+    assert 0 < s["thermal_efficiency"] < 1
+    assert s["burner_adiabatic_temperature_K"] == pytest.approx(
+        solution.t_gas_nodes[-1], abs=1e-6
+    )
+
+
 def test_burner_gas_enters_at_the_adiabatic_temperature():
     kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path("limestone_fired")))
     assert 1800.0 < kiln.gas_inlet_temperature < 1950.0  # natural gas, 40 % excess air

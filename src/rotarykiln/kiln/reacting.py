@@ -156,6 +156,7 @@ def reacting_kiln_from_case(case) -> tuple[Kiln, int]:
         name=case.name,
         counter_current=ch.counter_current,
         bed_depth=bed_depth,
+        flame=flame,
         **wall,
     )
     return kiln, int(ch.cells)
