@@ -43,9 +43,7 @@ def test_energy_sheet_of_the_fired_limestone_kiln(solution):
     assert abs(s["energy_closure_relative"]) < 1e-6
     assert s["energy_heat_to_solids_reaction_W"] > 0.1 * s["energy_heat_to_solids_sensible_W"]
     assert 0 < s["thermal_efficiency"] < 1
-    assert s["burner_adiabatic_temperature_K"] == pytest.approx(
-        solution.t_gas_nodes[-1], abs=1e-6
-    )
+    assert s["burner_adiabatic_temperature_K"] == pytest.approx(solution.t_gas_nodes[-1], abs=1e-6)
 
 
 def test_burner_gas_enters_at_the_adiabatic_temperature():
