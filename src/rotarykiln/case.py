@@ -355,7 +355,9 @@ class HeatGas(Section):
 
     flow: MassFlow | None = None
     inlet_temperature: Temperature | None = None
-    composition: str = "O2:0.2095, N2:0.7808, AR:0.0097"
+    composition: Annotated[str, BeforeValidator(_fuel_composition)] = (
+        "O2:0.2095, N2:0.7808, AR:0.0097"
+    )
 
 
 class HeatClosures(Section):

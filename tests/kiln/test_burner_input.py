@@ -95,3 +95,10 @@ def test_burner_dataclass_checks():
         Burner("CH4:1", 1e-3, AirStream(0.0))
     with pytest.raises(InputError, match="kiln.diameter"):
         fire(Burner("CH4:1", 1e-3, AirStream(0.02)), -1.0)
+
+
+def test_heat_gas_composition_checked_at_load():
+    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data["heat"]["gas"]["composition"] = "O2:0.21, N2:nan"
+    with pytest.raises(InputError, match="heat.gas.composition"):
+        parse_case(data)
