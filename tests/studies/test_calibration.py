@@ -182,3 +182,53 @@ def test_calibrate_command_recovers_the_gas_flow_of_the_heat_model(tmp_path, cap
     # the heat summary has no profiles: a one-line error that names the profile model
     assert main([*args[:3], "heat", *args[4:]]) == 2
     assert "heat_profiles" in capsys.readouterr().err
+
+
+def test_one_parameter_shared_by_several_cases():
+    import copy
+
+    from rotarykiln.studies.calibration import calibrate_cases
+
+    hot = copy.deepcopy(EXPONENTIAL_CASE)
+    hot["heat"]["gas_temperature"] = "800 K"
+    a, b = _synthetic(3), _synthetic(4)
+    b["value"] = 800.0 - 500.0 * np.exp(-0.6 * b["z"]) + np.random.default_rng(4).normal(0, 5, 9)
+    data = pd.concat([a.assign(case="cold"), b.assign(case="hot")], ignore_index=True)
+    r = calibrate_cases(
+        exponential_heating,
+        {"cold": EXPONENTIAL_CASE, "hot": hot},
+        ["heat.exchange=1 1/m"],
+        data,
+        workers=2,
+    )
+    assert r.ci95[0, 0] <= 0.6 <= r.ci95[0, 1] and r.dof == 17
+    assert r.cases["hot"]["heat"]["gas_temperature"] == "800 K"
+    assert set(r.residuals["case"]) == {"cold", "hot"}
+    with pytest.raises(InputError, match="did you mean hot"):
+        calibrate_cases(
+            exponential_heating,
+            {"cold": EXPONENTIAL_CASE, "hot": hot},
+            ["heat.exchange=1 1/m"],
+            data.assign(case="hott"),
+        )
+    with pytest.raises(InputError, match="case column"):
+        calibrate_cases(
+            exponential_heating, {"cold": EXPONENTIAL_CASE}, ["heat.exchange=1 1/m"], _synthetic(0)
+        )
+
+
+@pytest.mark.slow
+def test_tscheng_44_runs_global_insulation_thickness():
+    from rotarykiln.studies.calibration import calibrate_cases
+    from rotarykiln.studies.tscheng1978 import tscheng_cases, tscheng_measurements
+
+    r = calibrate_cases(
+        heat_profile_model,
+        tscheng_cases(),
+        ["heat.lining.2.thickness=13.77 mm"],
+        tscheng_measurements(),
+        workers=2,
+    )
+    assert r.success and len(r.residuals) == 176
+    assert 15 < r.x[0] < 25 and r.ci95[0, 1] - r.ci95[0, 0] < 10
+    assert np.sqrt(np.mean(r.residuals["residual"] ** 2)) < 8

@@ -37,6 +37,7 @@ __all__ = [
     "FitParam",
     "Measurements",
     "calibrate",
+    "calibrate_cases",
     "parse_fit",
     "read_measurements",
 ]
@@ -136,19 +137,27 @@ class Measurements:
         Measured value, in the unit of the output (K for temperatures).
     uncertainty : array
         One standard deviation, same unit, > 0.
+    case : array of str
+        Name of the case each point belongs to ("" when there is one case).
     """
 
     quantity: np.ndarray
     z: np.ndarray
     value: np.ndarray
     uncertainty: np.ndarray
+    case: np.ndarray | None = None
+
+    @property
+    def cases(self) -> np.ndarray:
+        """Case name of each point ("" for a single-case fit)."""
+        return self.case if self.case is not None else np.full(len(self.value), "", dtype=object)
 
     def __len__(self) -> int:
         return len(self.value)
 
     def to_frame(self) -> pd.DataFrame:
-        """The data as a table (quantity, z_m, value, uncertainty)."""
-        return pd.DataFrame(
+        """The data as a table (case if given, quantity, z_m, value, uncertainty)."""
+        frame = pd.DataFrame(
             {
                 "quantity": self.quantity,
                 "z_m": self.z,
@@ -156,6 +165,9 @@ class Measurements:
                 "uncertainty": self.uncertainty,
             }
         )
+        if self.case is not None:
+            frame.insert(0, "case", self.case)
+        return frame
 
 
 _ALIASES = {
@@ -175,7 +187,8 @@ def read_measurements(source) -> Measurements:
     """Read measured data from a CSV path or a DataFrame (quantity, z, value, uncertainty).
 
     ``z`` may carry a unit in its header (``z [m]``, ``z_m``; metres) and is empty for scalar
-    outputs; ``uncertainty`` must be > 0.
+    outputs; ``uncertainty`` must be > 0. An optional ``case`` column names the case of each
+    point, for a fit over several cases (:func:`calibrate_cases`).
 
     Parameters
     ----------
@@ -236,7 +249,10 @@ def read_measurements(source) -> Measurements:
             raise InputError(row, df["uncertainty"].iloc[i], "an uncertainty > 0")
         if not math.isnan(z[i]) and z[i] < 0:
             raise InputError(row, f"z = {z[i]:g} m", "a position >= 0 m")
-    return Measurements(q, z, v, u)
+    case = None
+    if "case" in df:
+        case = np.array([str(c).strip() for c in df["case"].fillna("")], dtype=object)
+    return Measurements(q, z, v, u, case)
 
 
 def _absent_but_allowed(base: Mapping, path: str) -> bool:
@@ -259,11 +275,13 @@ def _absent_but_allowed(base: Mapping, path: str) -> bool:
 class _Predictor:
     """Maps model outputs to the measured points; checks quantities and positions once."""
 
-    def __init__(self, outputs: Mapping, meas: Measurements):
+    def __init__(self, outputs: Mapping, meas: Measurements, rows=None):
         profiles = profile_columns(outputs)
+        rows = list(range(len(meas))) if rows is None else list(rows)
         scalars = [k for k, v in outputs.items() if "@" not in k and isinstance(v, int | float)]
         self.plan = []
-        for i, (q, z) in enumerate(zip(meas.quantity, meas.z, strict=True)):
+        for i in rows:
+            q, z = meas.quantity[i], meas.z[i]
             row = f"measurements row {i + 1}"
             if q in profiles:
                 if math.isnan(z):
@@ -327,6 +345,8 @@ class CalibrationResult:
     absolute_sigma : bool
     at_bound : tuple of bool
         Parameters that ended on a bound (their interval is not meaningful).
+    cases : dict
+        Name -> calibrated case, for a fit over several cases (:func:`calibrate_cases`).
     """
 
     params: tuple[FitParam, ...]
@@ -342,6 +362,7 @@ class CalibrationResult:
     nfev: int = 0
     absolute_sigma: bool = True
     at_bound: tuple[bool, ...] = ()
+    cases: dict = field(default_factory=dict, repr=False)
 
     @property
     def stderr(self) -> np.ndarray:
@@ -501,42 +522,167 @@ def calibrate(
     scipy.optimize.least_squares (trust-region reflective); Press et al., Numerical Recipes,
     3rd ed. (2007), sec. 15.5-15.6 (covariance and confidence regions of fitted parameters).
     """
-    from scipy import optimize, stats
+    fit = _fit_params(params)
+    meas = (
+        measurements if isinstance(measurements, Measurements) else read_measurements(measurements)
+    )
+    _check_counts(meas, fit)
+    create = False
+    for p in fit:
+        create |= _absent_but_allowed(base_case, p.path)
+    return _fit(func, {"": base_case}, fit, meas, create, absolute_sigma, diff_step, max_nfev, 1)
 
+
+def calibrate_cases(
+    func: Callable[[dict], Mapping],
+    cases: Mapping[str, Mapping],
+    params: Sequence,
+    measurements,
+    *,
+    absolute_sigma: bool = False,
+    diff_step: float = 1e-6,
+    max_nfev: int = 200,
+    workers: int = 1,
+) -> CalibrationResult:
+    """Fit case fields shared by several cases (operating points) to their measured data.
+
+    The same fitted values are set in every case (a global factor, a lining property...); the
+    measurements name their case in a ``case`` column.
+
+    Parameters
+    ----------
+    func : callable
+        Model ``case -> dict of scalars`` (module level when ``workers`` > 1).
+    cases : mapping
+        Case name -> case (nested dict).
+    params : sequence of FitParam or str
+        ``"path=start [low, high]"``; each path must exist in every case.
+    measurements : Measurements, DataFrame or path
+        With a ``case`` column naming a key of ``cases``.
+    absolute_sigma : bool
+        False (default here): the uncertainties are relative weights and the covariance is
+        scaled by chi2/dof (model error usually dominates over many operating points).
+    diff_step : float
+        Relative finite-difference step, -.
+    max_nfev : int
+        Most evaluations (each runs every case).
+    workers : int
+        Processes evaluating the cases in parallel.
+
+    Returns
+    -------
+    CalibrationResult
+        As :func:`calibrate`; ``cases`` holds every calibrated case and the residual table a
+        ``case`` column.
+
+    Examples
+    --------
+    >>> from rotarykiln.studies.examples import exponential_heating, EXPONENTIAL_CASE
+    >>> import copy, pandas as pd
+    >>> hot = copy.deepcopy(EXPONENTIAL_CASE); hot["heat"]["gas_temperature"] = "800 K"
+    >>> data = pd.DataFrame({"case": ["a", "a", "b", "b"], "quantity": "bed",
+    ...                      "z": [0.5, 2.0] * 2, "value": [403.7, 579.5, 429.6, 649.4],
+    ...                      "uncertainty": 5.0})
+    >>> r = calibrate_cases(exponential_heating, {"a": EXPONENTIAL_CASE, "b": hot},
+    ...                     ["heat.exchange=1 1/m"], data)
+    >>> round(float(r.x[0]), 2), sorted(r.cases)
+    (0.6, ['a', 'b'])
+
+    References
+    ----------
+    As :func:`calibrate`.
+    """
+    fit = _fit_params(params)
+    meas = (
+        measurements if isinstance(measurements, Measurements) else read_measurements(measurements)
+    )
+    if not isinstance(cases, Mapping) or not cases:
+        raise InputError("cases", cases, "a mapping name -> case with at least one case")
+    if meas.case is None:
+        raise InputError("measurements", "no case column", "a case column naming each point's case")
+    names = [str(k) for k in cases]
+    for i, c in enumerate(meas.case):
+        if c not in cases:
+            hint = difflib.get_close_matches(str(c), names, n=1)
+            mean = f"; did you mean {hint[0]}?" if hint else ""
+            raise InputError(f"measurements row {i + 1}", c, f"one of the cases{mean}")
+    _check_counts(meas, fit)
+    create = False
+    for case in cases.values():
+        for p in fit:
+            create |= _absent_but_allowed(case, p.path)
+    return _fit(func, dict(cases), fit, meas, create, absolute_sigma, diff_step, max_nfev, workers)
+
+
+def _fit_params(params) -> list[FitParam]:
     fit = [p if isinstance(p, FitParam) else parse_fit(p) for p in params]
     if not fit:
         raise InputError("--fit", "none", "at least one PATH=START")
     paths = [p.path for p in fit]
     if len(set(paths)) != len(paths):
         raise InputError("--fit", paths, "each path once")
-    meas = (
-        measurements if isinstance(measurements, Measurements) else read_measurements(measurements)
-    )
+    return fit
+
+
+def _check_counts(meas: Measurements, fit) -> None:
     if len(meas) < len(fit):
         raise InputError(
             "measurements",
             f"{len(meas)} data points",
             f"at least as many as the fitted parameters ({len(fit)})",
         )
-    create = False
-    for p in fit:
-        create |= _absent_but_allowed(base_case, p.path)
 
+
+def _call_recording(func, case):
+    """``func(case)`` in a worker, with its warnings returned (category, text) rather than
+    printed by every process."""
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        out = func(case)
+    return out, [(w.category, str(w.message)) for w in caught]
+
+
+def _fit(func, cases, fit, meas, create, absolute_sigma, diff_step, max_nfev, workers):
+    from concurrent.futures import ProcessPoolExecutor
+
+    from scipy import optimize, stats
+
+    case_of = meas.cases if len(cases) > 1 or "" not in cases else np.full(len(meas), "", object)
+    used = [n for n in cases if np.any(case_of == n)]
+    rows = {n: np.flatnonzero(case_of == n) for n in used}
     cache: dict[tuple, np.ndarray] = {}
-    state = {"predict": None, "nfev": 0}
+    state: dict = {"predict": {}, "nfev": 0}
+    pool = ProcessPoolExecutor(max_workers=workers) if workers > 1 and len(used) > 1 else None
+
+    def with_x(name, x):
+        return with_values(
+            cases[name], {p.path: p.value(v) for p, v in zip(fit, x, strict=True)}, create=create
+        )
 
     def model(x) -> np.ndarray:
         key = tuple(np.round(x, 14))
         if key in cache:
             return cache[key]
-        case = with_values(
-            base_case, {p.path: p.value(v) for p, v in zip(fit, x, strict=True)}, create=create
-        )
-        out = func(case)
+        dicts = [with_x(n, x) for n in used]
+        if pool is not None:
+            import functools
+            import warnings
+
+            outs = []
+            for out, caught in pool.map(functools.partial(_call_recording, func), dicts):
+                outs.append(out)
+                for category, text in caught:
+                    warnings.warn(text, category, stacklevel=2)
+        else:
+            outs = [func(d) for d in dicts]
         state["nfev"] += 1
-        if state["predict"] is None:
-            state["predict"] = _Predictor(out, meas)
-        y = state["predict"](out)
+        y = np.empty(len(meas))
+        for n, out in zip(used, outs, strict=True):
+            if n not in state["predict"]:
+                state["predict"][n] = _Predictor(out, meas, rows[n])
+            y[rows[n]] = state["predict"][n](out)
         cache[key] = y
         return y
 
@@ -553,15 +699,20 @@ def calibrate(
     x0 = np.array([p.x0 for p in fit])
     lo = np.array([p.lower for p in fit])
     hi = np.array([p.upper for p in fit])
-    sol = optimize.least_squares(
-        residual,
-        x0,
-        bounds=(lo, hi),
-        x_scale="jac",
-        diff_step=diff_step,
-        max_nfev=max_nfev,
-        method="trf",
-    )
+    try:
+        sol = optimize.least_squares(
+            residual,
+            x0,
+            bounds=(lo, hi),
+            x_scale="jac",
+            diff_step=diff_step,
+            max_nfev=max_nfev,
+            method="trf",
+        )
+        pred = model(sol.x)
+    finally:
+        if pool is not None:
+            pool.shutdown(cancel_futures=True)
     r = sol.fun
     chi2 = float(r @ r)
     dof = len(meas) - len(fit)
@@ -578,14 +729,11 @@ def calibrate(
         q = stats.norm.ppf(0.975)
     se = np.sqrt(np.clip(np.diag(cov), 0, None))
     ci = np.column_stack([sol.x - q * se, sol.x + q * se])
-    pred = model(sol.x)
     res_frame = meas.to_frame()
     res_frame["model"] = pred
     res_frame["residual"] = pred - meas.value
     res_frame["weighted"] = r
-    case = with_values(
-        base_case, {p.path: p.value(v) for p, v in zip(fit, sol.x, strict=True)}, create=create
-    )
+    calibrated = {n: with_x(n, sol.x) for n in cases}
     return CalibrationResult(
         tuple(fit),
         sol.x,
@@ -594,10 +742,11 @@ def calibrate(
         res_frame,
         chi2,
         dof,
-        case,
+        next(iter(calibrated.values())),
         bool(sol.success),
         str(sol.message),
         state["nfev"],
         absolute_sigma,
         tuple(bool(a) for a in np.asarray(sol.active_mask) != 0),
+        calibrated if len(cases) > 1 or "" not in cases else {},
     )
