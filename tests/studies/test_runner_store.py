@@ -162,3 +162,37 @@ def test_1000_cases_on_a_local_cluster_survive_a_killed_worker(tmp_path):
     assert killed and len(res.frame) == 1000 and res.n_failed == 0
     assert len(ResultStore(tmp_path / "runs").read()) == 1000
     assert list(res.frame["y"]) == [float(i) ** 2 for i in range(1000)]
+
+
+def test_sigint_then_restart_runs_only_the_missing_cases(tmp_path):
+    store = tmp_path / "runs"
+    script = textwrap.dedent(f"""
+        from rotarykiln.studies import grid, run_sweep
+        from rotarykiln.studies.examples import sleepy_square
+        run_sweep(sleepy_square, {{"x": 0.0, "sleep_s": 0.005}},
+                  grid({{"x": [float(i) for i in range(400)]}}), executor="process",
+                  max_workers=2, chunk_size=4, store={str(store)!r}, flush_every=10)
+    """)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", script],
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
+        stderr=subprocess.PIPE,
+    )
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline and len(list(store.glob("part-*.parquet"))) < 3:
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode != 0 and b"KeyboardInterrupt" in err
+    stored = len(ResultStore(store).read())
+    assert 30 <= stored < 400
+    res = run_sweep(
+        sleepy_square,
+        {"x": 0.0, "sleep_s": 0.005},
+        grid({"x": [float(i) for i in range(400)]}),
+        executor="process",
+        max_workers=2,
+        store=store,
+    )
+    assert res.meta["reused"] == stored and res.meta["ran"] == 400 - stored
+    assert res.n_failed == 0 and len(ResultStore(store).read()) == 400

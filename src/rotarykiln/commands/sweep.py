@@ -221,7 +221,13 @@ def run(args) -> int:
             for c in res.frame.columns
             if not c.endswith(" [SI]") and c not in ("elapsed_s", "hash", "warnings")
         ]
-        print(res.frame[cols].to_string(index=False))
+        table = res.frame[cols]
+        if len(table) > 40:  # a large study: the head and the tail; the files hold everything
+            print(table.head(20).to_string(index=False))
+            print(f"... {len(table) - 25} more rows (all in the CSV/Parquet files) ...")
+            print(table.tail(5).to_string(index=False, header=False))
+        else:
+            print(table.to_string(index=False))
         print(
             f"{len(res.frame)} cases ({res.meta.get('ran', len(res.frame))} run now, "
             f"{res.meta.get('reused', 0)} from the store), {res.n_failed} failed, "
