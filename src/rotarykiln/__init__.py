@@ -5,8 +5,13 @@ Layers (see docs/architecture.md): ``units``/``errors`` at the bottom, ``geometr
 composing them, and ``case``/``cli``/``plot`` talking to people.
 """
 
+from importlib.metadata import PackageNotFoundError, version
+
 from rotarykiln.errors import ConvergenceError, InputError, OutOfRangeWarning
 
-__version__ = "0.1.0"
+try:  # the one source of the version is pyproject.toml, read from the installed metadata
+    __version__ = version("rotarykiln")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree not installed
+    __version__ = "0+unknown"
 
 __all__ = ["ConvergenceError", "InputError", "OutOfRangeWarning", "__version__"]
