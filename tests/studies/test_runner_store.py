@@ -196,3 +196,30 @@ def test_sigint_then_restart_runs_only_the_missing_cases(tmp_path):
     )
     assert res.meta["reused"] == stored and res.meta["ran"] == 400 - stored
     assert res.n_failed == 0 and len(ResultStore(store).read()) == 400
+
+
+def test_a_case_that_always_kills_its_worker_fails_alone(tmp_path):
+    base = {"x": 0.0, "crash_at": 5.0, "marker": str(tmp_path / "m"), "always": True}
+    res = run_sweep(
+        crash_once, base, grid({"x": X}), executor="process", max_workers=2, chunk_size=3
+    )
+    df = res.frame.set_index("x")
+    assert res.n_failed == 1 and "worker process died" in df.loc[5.0, "error"]
+    assert (df.drop(index=5.0)["y"] == 2 * df.drop(index=5.0).index).all()
+
+
+def test_on_dask_a_case_that_always_kills_its_worker_fails_alone(tmp_path):
+    pytest.importorskip("distributed")
+    base = {"x": 0.0, "crash_at": 5.0, "marker": str(tmp_path / "m"), "always": True}
+    res = run_sweep(
+        crash_once,
+        base,
+        grid({"x": X}),
+        executor="dask",
+        max_workers=2,
+        chunk_size=3,
+        store=tmp_path / "runs",
+    )
+    df = res.frame.set_index("x")
+    assert res.n_failed == 1 and "KilledWorker" in df.loc[5.0, "error"]
+    assert len(ResultStore(tmp_path / "runs").read()) == 20

@@ -131,10 +131,11 @@ def sleepy_square(case: dict) -> dict:
 
 def crash_once(case: dict) -> dict:
     """Kills its worker process once (for ``x == crash_at``, if file ``marker`` does not exist
-    yet: it is created first), else returns ``y = 2 x``. Tests the runner's recovery."""
+    yet: it is created first; every time if ``always`` is true), else returns ``y = 2 x``.
+    Tests the runner's recovery."""
     x = float(case["x"])
     marker = Path(case["marker"])
-    if x == float(case["crash_at"]) and not marker.exists():
+    if x == float(case["crash_at"]) and (case.get("always") or not marker.exists()):
         marker.write_text("crashed")
         os._exit(1)
     return {"y": 2.0 * x}

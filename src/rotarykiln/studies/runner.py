@@ -136,9 +136,47 @@ def _serial_rows(func, base, chunks, create) -> Iterator[dict]:
         yield from _run_chunk(func, base, ch, create)
 
 
+def _isolated_rows(func, base, chunks, create) -> Iterator[dict]:
+    """Chunks that were in a pool when it broke, several times: one at a time in a one-worker
+    pool, so that a chunk that kills its worker is the only one marked failed."""
+    pool = None
+    try:
+        for ch in chunks:
+            if pool is None:
+                pool = ProcessPoolExecutor(max_workers=1, initializer=_ignore_sigint)
+            try:
+                rows = pool.submit(_run_chunk, func, base, ch, create).result()
+            except BrokenProcessPool as exc:
+                pool.shutdown(wait=False, cancel_futures=True)
+                pool = None
+                if len(ch) > 1:  # find the case: each alone
+                    yield from _isolated_rows(func, base, [[c] for c in ch], create)
+                    continue
+                rows = _failed_rows(ch, f"worker process died: {exc}".replace("\n", " "))
+            except Exception as exc:
+                rows = _failed_rows(ch, f"{type(exc).__name__}: {exc}".replace("\n", " "))
+            yield from rows
+    except BaseException:
+        if pool is not None:
+            for p in list(getattr(pool, "_processes", {}).values()):
+                p.terminate()
+            pool.shutdown(wait=False, cancel_futures=True)
+            pool = None
+        raise
+    finally:
+        if pool is not None:
+            pool.shutdown(wait=True)
+
+
 def _process_rows(func, base, chunks, create, workers, max_retries=2) -> Iterator[dict]:
     pending = [(ch, 0) for ch in chunks]
     while pending:
+        suspects = [ch for ch, a in pending if a >= max_retries]
+        pending = [(ch, a) for ch, a in pending if a < max_retries]
+        if suspects:  # the pool broke repeatedly with these in it: find the culprit
+            yield from _isolated_rows(func, base, suspects, create)
+        if not pending:
+            break
         pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
         try:
             futures = {
@@ -149,11 +187,9 @@ def _process_rows(func, base, chunks, create, workers, max_retries=2) -> Iterato
                 ch, attempts = futures[fut]
                 try:
                     rows = fut.result()
-                except BrokenProcessPool as exc:  # a worker died (killed, out of memory...)
-                    if attempts < max_retries:
-                        pending.append((ch, attempts + 1))  # a new pool runs them again
-                        continue
-                    rows = _failed_rows(ch, f"worker process died: {exc}".replace("\n", " "))
+                except BrokenProcessPool:  # a worker died (killed, out of memory, a crash)
+                    pending.append((ch, attempts + 1))  # a new pool runs them again
+                    continue
                 except Exception as exc:  # e.g. an output that cannot be pickled back
                     rows = _failed_rows(ch, f"{type(exc).__name__}: {exc}".replace("\n", " "))
                 yield from rows
@@ -201,7 +237,7 @@ def dask_client(scheduler=None, workers: int | None = None, timeout: float = 10.
                 threads_per_worker=1,
                 processes=True,
                 dashboard_address=None,
-                silence_logs=logging.ERROR,
+                silence_logs=logging.CRITICAL,
             )
             return Client(cluster), True
     if isinstance(scheduler, str):
@@ -228,19 +264,29 @@ def _dask_rows(func, base, chunks, create, scheduler, workers, timeout) -> Itera
     client, owned = dask_client(scheduler, workers, timeout)
     futures = []
     try:
-        base_f = client.scatter(base, broadcast=True)
+        # the base case goes with each task (a few kB): scattered data would be lost for good
+        # when every worker holding it dies, failing the rest of the study
+        base_f = base
         futures = [
             client.submit(_run_chunk, func, base_f, ch, create, pure=False, retries=2)
             for ch in chunks
         ]
         specs = {f.key: ch for f, ch in zip(futures, chunks, strict=True)}
-        for fut in dask_as_completed(futures):
+        ac = dask_as_completed(futures)
+        for fut in ac:
             try:
                 rows = fut.result()
             except Exception as exc:  # KilledWorker after repeated worker deaths, ...
-                rows = _failed_rows(
-                    specs[fut.key], f"{type(exc).__name__}: {exc}".replace("\n", " ")
-                )
+                ch = specs[fut.key]
+                if len(ch) > 1 and type(exc).__name__ == "KilledWorker":
+                    for c in ch:  # find the case that kills its worker: each alone
+                        f1 = client.submit(_run_chunk, func, base_f, [c], create, pure=False)
+                        specs[f1.key] = [c]
+                        futures.append(f1)
+                        ac.add(f1)
+                    fut.release()
+                    continue
+                rows = _failed_rows(ch, f"{type(exc).__name__}: {exc}".replace("\n", " "))
             fut.release()
             yield from rows
     finally:
@@ -352,8 +398,10 @@ def run_sweep(
     cases : sequence of CaseSpec
         From :mod:`rotarykiln.studies.design` (grid, one-at-a-time, Latin hypercube, Sobol...).
     executor : {"process", "serial", "dask"}
-        ``process``: concurrent.futures.ProcessPoolExecutor on this machine (default; a worker
-        that dies is replaced and its chunk run again, twice at most); ``serial``: in this
+        ``process``: concurrent.futures.ProcessPoolExecutor on this machine (default; when a
+        worker dies the unfinished chunks run again in a new pool; chunks that were in a broken
+        pool twice then run one at a time, and a case that still kills its worker is stored as
+        failed, alone); ``serial``: in this
         process; ``dask``: a dask.distributed cluster (see ``dask_scheduler``).
     max_workers : int, optional
         Processes (default: the number of CPUs, at most the number of chunks); the workers of
