@@ -57,3 +57,29 @@ def test_sweep_command_sampled_design_resumes_and_fails_loudly(tmp_path, capsys)
     assert "1 of 2 cases failed" in capsys.readouterr().err
     assert main([*args[:-2], "--param", "chemistry.residence_tme=uniform(1 s, 2 s)"]) == 2
     assert "did you mean chemistry.residence_time" in capsys.readouterr().err
+
+
+def test_sweep_command_unreachable_scheduler_is_one_line(tmp_path, capsys, monkeypatch):
+    import rotarykiln.studies.runner as runner
+
+    real = runner.dask_client
+    monkeypatch.setattr(runner, "dask_client", lambda s, w, t: real(s, w, 1.0))
+    args = [
+        "sweep",
+        "--case",
+        "charcoal_activation",
+        "--model",
+        MODEL,
+        "--executor",
+        "dask",
+        "--scheduler",
+        "tcp://127.0.0.1:9",
+        "--grid",
+        "chemistry.residence_time=3000 s",
+        "--out",
+        str(tmp_path),
+    ]
+    assert main(args) == 2
+    err = capsys.readouterr().err.strip()
+    assert "reachable Dask scheduler" in err and len(err.splitlines()) == 1
+    assert main([*args[:5], "--executor", "process", *args[7:]]) == 2  # --scheduler needs dask
