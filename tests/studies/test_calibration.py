@@ -232,3 +232,37 @@ def test_tscheng_44_runs_global_insulation_thickness():
     assert r.success and len(r.residuals) == 176
     assert 15 < r.x[0] < 25 and r.ci95[0, 1] - r.ci95[0, 0] < 10
     assert np.sqrt(np.mean(r.residuals["residual"] ** 2)) < 8
+
+
+def test_calibrate_command_joint_fit_of_two_cases(tmp_path, capsys):
+    import copy
+
+    cold = tmp_path / "cold.yaml"
+    cold.write_text(yaml.safe_dump(EXPONENTIAL_CASE))
+    hot_case = copy.deepcopy(EXPONENTIAL_CASE)
+    hot_case["heat"]["gas_temperature"] = "800 K"
+    hot = tmp_path / "hot.yaml"
+    hot.write_text(yaml.safe_dump(hot_case))
+    b = _synthetic(6)
+    b["value"] = 800.0 - 500.0 * np.exp(-0.6 * b["z"]) + np.random.default_rng(6).normal(0, 5, 9)
+    data = pd.concat([_synthetic(5).assign(case="cold"), b.assign(case="hot")])
+    data.to_csv(tmp_path / "data.csv", index=False)
+    args = [
+        "calibrate",
+        f"cold={cold}",
+        f"hot={hot}",
+        "--model",
+        "rotarykiln.studies.examples:exponential_heating",
+        "--data",
+        str(tmp_path / "data.csv"),
+        "--fit",
+        "heat.exchange=1 1/m",
+        "--out",
+        str(tmp_path / "out"),
+        "--json",
+    ]
+    assert main(args) == 0
+    p = json.loads(capsys.readouterr().out)["parameters"][0]
+    assert p["ci95_low"] <= 0.6 <= p["ci95_high"]
+    back = yaml.safe_load((tmp_path / "out" / "calibrated_hot.yaml").read_text())
+    assert back["heat"]["gas_temperature"] == "800 K" and back["heat"]["exchange"].endswith("1/m")

@@ -8,6 +8,10 @@ Writes OUT/parameters.csv (value, standard error, 95 % interval), OUT/correlatio
 OUT/residuals.csv, the residual plot OUT/residuals.png, OUT/calibration.json and the calibrated
 case OUT/calibrated.yaml (values with their units).
 
+Several cases (operating points) with the same fitted fields: give them all (``NAME=FILE`` or
+built-in names, e.g. ``heat/tscheng_A16``) and name each point's case in a ``case`` column of
+the data; the covariance is then scaled by chi2/dof unless ``--absolute-uncertainty``.
+
 Example::
 
     rotarykiln calibrate heat/tscheng_A16 --model heat_profiles --data plant.csv \\
@@ -21,8 +25,14 @@ import argparse
 
 from rotarykiln.commands._args import out_dir, plain, print_json
 from rotarykiln.commands.sweep import _load_case, _load_model
+from rotarykiln.errors import InputError
 from rotarykiln.outputs import write_frame_atomic, write_json_atomic
-from rotarykiln.studies.calibration import calibrate, parse_fit, read_measurements
+from rotarykiln.studies.calibration import (
+    calibrate,
+    calibrate_cases,
+    parse_fit,
+    read_measurements,
+)
 
 __all__ = ["register", "run"]
 
@@ -34,7 +44,11 @@ def register(sub) -> None:
         description=plain(__doc__),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("case", help="case YAML file or built-in case name")
+    p.add_argument(
+        "case",
+        nargs="+",
+        help="case YAML file or built-in case name; several (NAME=FILE) for a joint fit",
+    )
     p.add_argument(
         "--model", default="heat_profiles", help="heat_profiles (default), heat or module:function"
     )
@@ -49,8 +63,15 @@ def register(sub) -> None:
     p.add_argument(
         "--relative-uncertainty",
         action="store_true",
-        help="the uncertainties are only relative weights: scale the covariance by chi2/dof",
+        help="the uncertainties are only relative weights: scale the covariance by chi2/dof "
+        "(the default with several cases)",
     )
+    p.add_argument(
+        "--absolute-uncertainty",
+        action="store_true",
+        help="with several cases: the uncertainties are standard deviations",
+    )
+    p.add_argument("--workers", type=int, default=1, help="processes (several cases)")
     p.add_argument("--max-evaluations", type=int, default=200, help="most model evaluations")
     p.add_argument("--json", action="store_true", help="print the result as JSON")
     p.add_argument("--out", help="output folder (default: calibration/)")
@@ -60,16 +81,34 @@ def register(sub) -> None:
 def run(args) -> int:
     params = [parse_fit(f) for f in args.fit]
     data = read_measurements(args.data)
-    base = _load_case(args.case)
     func = _load_model(args.model)
-    res = calibrate(
-        func,
-        base,
-        params,
-        data,
-        absolute_sigma=not args.relative_uncertainty,
-        max_nfev=args.max_evaluations,
-    )
+    if len(args.case) == 1:
+        res = calibrate(
+            func,
+            _load_case(args.case[0]),
+            params,
+            data,
+            absolute_sigma=not args.relative_uncertainty,
+            max_nfev=args.max_evaluations,
+        )
+    else:
+        cases = {}
+        for item in args.case:
+            name, sep, spec = item.partition("=")
+            if not sep:
+                name, spec = item, item
+            if name in cases:
+                raise InputError("case", name, "given once")
+            cases[name] = _load_case(spec)
+        res = calibrate_cases(
+            func,
+            cases,
+            params,
+            data,
+            absolute_sigma=args.absolute_uncertainty,
+            max_nfev=args.max_evaluations,
+            workers=args.workers,
+        )
     folder = out_dir(args.out, "calibration")
     table = res.to_frame()
     write_frame_atomic(folder / "parameters.csv", table)
@@ -77,6 +116,8 @@ def run(args) -> int:
     write_frame_atomic(folder / "residuals.csv", res.residuals)
     res.save_plot(folder / "residuals.png")
     res.write_case(folder / "calibrated.yaml")
+    for name, case in res.cases.items():  # a joint fit: every calibrated case
+        res.write_case(folder / f"calibrated_{name.replace('/', '_')}.yaml", case)
     summary = res.summary()
     write_json_atomic(folder / "calibration.json", summary)
     if args.json:

@@ -414,8 +414,9 @@ class CalibrationResult:
             "correlation": self.correlation.round(6).values.tolist(),
         }
 
-    def write_case(self, path) -> Path:
-        """Write the calibrated case as YAML (values with their units), atomically."""
+    def write_case(self, path, case: dict | None = None) -> Path:
+        """Write the calibrated case (or ``case``, one of :attr:`cases`) as YAML with units,
+        atomically."""
         import yaml
 
         from rotarykiln.outputs import write_text_atomic
@@ -424,7 +425,8 @@ class CalibrationResult:
         for p, x, (lo, hi) in zip(self.params, self.x, self.ci95, strict=True):
             lines.append(f"# {p.path} = {p.value(x)} (95 % interval {lo:.6g} to {hi:.6g})")
         lines.append(f"# chi2 = {self.chi2:.4g} for {self.dof} degrees of freedom")
-        text = "\n".join(lines) + "\n" + yaml.safe_dump(self.case, sort_keys=False)
+        body = self.case if case is None else case
+        text = "\n".join(lines) + "\n" + yaml.safe_dump(body, sort_keys=False)
         return write_text_atomic(path, text)
 
     def plot(self):
