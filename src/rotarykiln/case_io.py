@@ -1,5 +1,10 @@
 """Case files for editors and round trips: the JSON Schema of a case, and a case written back.
 
+:func:`dump_case` turns a validated :class:`~rotarykiln.case.Case` back into a mapping with units
+(``"5.5 m"``, ``"1.5 rpm"``, ``"62 kg/h"``, ``"298.15 K"``) and :func:`case_to_yaml` /
+:func:`write_case` into YAML; loading that YAML gives an equal case (the shortest number that
+converts back to the same SI float is written, else the SI value in full).
+
 :func:`case_json_schema` is the JSON Schema (draft 2020-12) of the case file, generated from the
 pydantic model :class:`rotarykiln.case.Case`; quantity fields accept a number or a string with a
 unit (``"1.5 rpm"``), as the loader does. The schema is shipped as
@@ -12,15 +17,31 @@ language server checks a case file against it with a first line::
 from __future__ import annotations
 
 import inspect
+import math
+import os
+import types
+import typing
 from importlib import resources
-from typing import Any
+from pathlib import Path
+from typing import Annotated, Any, Union
 
+import yaml
+from pydantic import BaseModel, BeforeValidator
 from pydantic.json_schema import GenerateJsonSchema
 from pydantic_core import core_schema
 
-from rotarykiln.units import EXAMPLES, UNIT_REQUIRED
+from rotarykiln.units import EXAMPLES, KINDS, UNIT_REQUIRED, to_si
 
-__all__ = ["SCHEMA_DIALECT", "case_json_schema", "shipped_schema_path"]
+__all__ = [
+    "DISPLAY_UNITS",
+    "SCHEMA_DIALECT",
+    "case_json_schema",
+    "case_to_yaml",
+    "dump_case",
+    "format_si",
+    "shipped_schema_path",
+    "write_case",
+]
 
 SCHEMA_DIALECT = "https://json-schema.org/draft/2020-12/schema"
 """The JSON Schema dialect of :func:`case_json_schema`."""
@@ -115,3 +136,241 @@ def case_json_schema() -> dict[str, Any]:
 def shipped_schema_path():
     """Path of the schema shipped with the package (``rotarykiln/case.schema.json``)."""
     return resources.files("rotarykiln") / "case.schema.json"
+
+
+# --------------------------------------------------------------------------------------------
+# A validated case written back with units.
+
+DISPLAY_UNITS: dict[str, tuple[str, ...]] = {
+    "length": ("m", "mm"),
+    "angle": ("deg", "%"),
+    "rotation rate": ("rpm",),
+    "mass flow": ("kg/h", "kg/s", "t/h"),
+    "volumetric flow": ("m3/h", "m3/s"),
+    "temperature": ("K",),
+    "time": ("s", "min", "h"),
+    "density": ("kg/m3",),
+    "velocity": ("m/s",),
+    "pressure": ("Pa", "kPa", "bar"),
+    "power": ("W", "kW", "MW"),
+    "thermal conductivity": ("W/m/K",),
+    "specific heat": ("J/kg/K", "kJ/kg/K"),
+    "heat transfer coefficient": ("W/m2/K",),
+    "fraction": (),
+}
+"""Units in which :func:`format_si` may write each kind (the shortest text wins; none: a bare
+number)."""
+
+
+def _si_text(kind: str) -> str:
+    return KINDS[kind].si.replace("**", "")
+
+
+def format_si(value: float, kind: str) -> str | float:
+    """An SI value as the text a case file would hold, converting back to the same float.
+
+    Parameters
+    ----------
+    value : float
+        The SI value (m, rad, rad/s, kg/s, K...).
+    kind : str
+        A key of :data:`rotarykiln.units.KINDS` (``"rotation rate"``).
+
+    Returns
+    -------
+    str or float
+        ``"1.5 rpm"``-style text in a unit of :data:`DISPLAY_UNITS`, the shortest that
+        :func:`rotarykiln.units.to_si` reads back as exactly ``value``; the SI value in full with
+        its SI unit when no such text does; a bare float for fractions.
+
+    Examples
+    --------
+    >>> format_si(0.15707963267948966, "rotation rate")
+    '1.5 rpm'
+    >>> format_si(62 / 3600, "mass flow")
+    '62 kg/h'
+    >>> format_si(0.0025, "length")
+    '2.5 mm'
+    >>> format_si(0.12, "fraction")
+    0.12
+    """
+    from rotarykiln.units import ureg
+
+    value = float(value)
+    units = DISPLAY_UNITS.get(kind, (_si_text(kind),))
+    if not units or not math.isfinite(value):
+        return value
+    best = None
+    for unit in units:
+        try:
+            if unit == "%":  # a grade, rise over run (as "5 %" is read for a slope)
+                shown = 100 * math.tan(value)
+            else:
+                shown = ureg.Quantity(value, KINDS[kind].si).to(_pint_unit(unit)).magnitude
+        except Exception:  # pragma: no cover - a display unit pint does not know
+            continue
+        for digits in (6, 9, 12, 15, 17):
+            text = f"{shown:.{digits}g} {unit}"
+            if _reads_back(text, kind, value):
+                if best is None or len(text) < len(best):
+                    best = text
+                break
+    if best is not None:
+        return best
+    text = f"{value!r} {_si_text(kind)}"
+    return text if _reads_back(text, kind, value) else value
+
+
+def _pint_unit(unit: str) -> str:
+    names = {"rpm": "revolution/minute", "deg": "degree", "t/h": "metric_ton/hour"}
+    return names.get(unit, unit.replace("m3", "m**3").replace("m2", "m**2"))
+
+
+def _reads_back(text: str, kind: str, value: float) -> bool:
+    try:
+        return to_si("", text, kind) == value
+    except Exception:
+        return False
+
+
+def _arms(annotation: Any) -> list:
+    """The alternatives of a union annotation (itself when it is not a union)."""
+    if typing.get_origin(annotation) in (Union, types.UnionType):
+        return list(typing.get_args(annotation))
+    return [annotation]
+
+
+def _kind_of(annotation: Any) -> str | None:
+    """The quantity kind of an ``Annotated[float, BeforeValidator(convert)]`` annotation."""
+    if typing.get_origin(annotation) is Annotated:
+        for meta in annotation.__metadata__:
+            if isinstance(meta, BeforeValidator):
+                return _quantity_kind(meta.func)
+    return None
+
+
+def _dump_value(value: Any, annotation: Any) -> Any:
+    if value is None:
+        return None
+    if isinstance(value, BaseModel):
+        return dump_case(value)
+    own_kind = _kind_of(annotation)
+    if typing.get_origin(annotation) is Annotated:
+        annotation = annotation.__origin__
+    arms = _arms(annotation)
+    if isinstance(value, float | int) and not isinstance(value, bool):
+        if own_kind is not None:
+            return format_si(value, own_kind)
+        for arm in arms:
+            kind = _kind_of(arm)
+            if kind is not None:
+                return format_si(value, kind)
+        return value
+    if isinstance(value, list | tuple):
+        for arm in arms:
+            inner = arm.__origin__ if typing.get_origin(arm) is Annotated else arm
+            origin, args = typing.get_origin(inner), typing.get_args(inner)
+            if origin is list and args:
+                return [_dump_value(v, args[0]) for v in value]
+            if origin is tuple and args:
+                items = args if len(args) == len(value) else [args[0]] * len(value)
+                return [_dump_value(v, a) for v, a in zip(value, items, strict=True)]
+        return [_dump_value(v, Any) for v in value]
+    if isinstance(value, dict):
+        return {k: _dump_value(v, Any) for k, v in value.items()}
+    return value
+
+
+def dump_case(case: BaseModel) -> dict[str, Any]:
+    """A validated case (or one of its sections) as a mapping with units, ready for YAML.
+
+    Only the keys given when the case was loaded are written (defaults stay implicit); every
+    quantity is written with a unit (:func:`format_si`), so ``parse_case(dump_case(case))``
+    equals ``case``.
+
+    Parameters
+    ----------
+    case : Case
+        A validated :class:`rotarykiln.case.Case`, or any section model of it.
+
+    Returns
+    -------
+    dict
+        Plain data (str, float, int, bool, list, dict, None): the case file's mapping.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case, parse_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> case = load_case(builtin_case_path("heat/barr_T4"))
+    >>> data = dump_case(case)
+    >>> data["operation"]
+    {'speed': '1.5 rpm', 'feed': '62 kg/h'}
+    >>> parse_case(data) == case
+    True
+    """
+    out = {}
+    for name, info in type(case).model_fields.items():
+        if name in case.model_fields_set:
+            # pydantic keeps a field's own Annotated metadata (the unit converter) apart
+            annotation = info.annotation
+            if info.metadata:
+                annotation = Annotated[(annotation, *info.metadata)]
+            out[name] = _dump_value(getattr(case, name), annotation)
+    return out
+
+
+class _CaseDumper(yaml.SafeDumper):
+    """Safe YAML with lists of plain values on one line (``z_gas: [0.21 m, 0.72 m]``)."""
+
+    def represent_list(self, data):
+        flow = all(isinstance(x, str | int | float | bool) or x is None for x in data)
+        return self.represent_sequence("tag:yaml.org,2002:seq", data, flow_style=flow)
+
+
+_CaseDumper.add_representer(list, _CaseDumper.represent_list)
+
+
+def case_to_yaml(case: BaseModel) -> str:
+    """The YAML text of a validated case, with units (see :func:`dump_case`).
+
+    Parameters
+    ----------
+    case : Case
+        A validated :class:`rotarykiln.case.Case`.
+
+    Returns
+    -------
+    str
+        YAML text, keys in the order of the case model.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> print(case_to_yaml(load_case(builtin_case_path("heat/barr_T4"))).splitlines()[3])
+    kiln:
+    """
+    return yaml.dump(
+        dump_case(case), Dumper=_CaseDumper, sort_keys=False, allow_unicode=True, width=100
+    )
+
+
+def write_case(case: BaseModel, path: str | os.PathLike) -> Path:
+    """Write a validated case as a YAML case file (atomically), with units.
+
+    Parameters
+    ----------
+    case : Case
+        A validated :class:`rotarykiln.case.Case`.
+    path : str or Path
+        The file to write.
+
+    Returns
+    -------
+    Path
+        The path written.
+    """
+    from rotarykiln.outputs import write_text_atomic
+
+    return write_text_atomic(path, case_to_yaml(case))
