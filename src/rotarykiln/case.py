@@ -371,6 +371,9 @@ class HeatClosures(Section):
     radiation: bool | None = None
     gas_emissivity: str | float | None = None
     bed_conductivity: str | None = None
+    convection_factor: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = (
+        None
+    )
 
 
 class HeatMeasurements(Section):

@@ -171,3 +171,12 @@ def test_continuation_used_when_newton_fails(monkeypatch, flame_kiln):
     assert abs(sol.energy_closure) < CLOSURE_TOL
     ref = solve_kiln(flame_kiln)
     assert np.max(np.abs(sol.t_bed_nodes - ref.t_bed_nodes)) < 1e-6
+
+
+def test_convection_factor_scales_the_gas_coefficients():
+    base = solve_kiln(tscheng_kiln("A16"))
+    k = tscheng_kiln("A16", closures=Closures(convection_factor=2.0))
+    sol = solve_kiln(k)
+    assert np.allclose(sol.fluxes["h_gb"], 2.0 * base.fluxes["h_gb"], rtol=0.05)
+    assert sol.bed_outlet_temperature > base.bed_outlet_temperature
+    assert abs(sol.energy_closure) < CLOSURE_TOL

@@ -234,6 +234,28 @@ def test_tscheng_44_runs_global_insulation_thickness():
     assert np.sqrt(np.mean(r.residuals["residual"] ** 2)) < 8
 
 
+@pytest.mark.slow
+def test_tscheng_44_runs_global_convection_factor():
+    # issue 13: one global factor on the gas-solid convection fitted to the window temperatures
+    from rotarykiln.studies.calibration import calibrate_cases
+    from rotarykiln.studies.tscheng1978 import tscheng_cases, tscheng_measurements
+
+    cases = tscheng_cases()
+    for c in cases.values():
+        c["heat"]["closures"] = {"convection_factor": 1.0}
+    r = calibrate_cases(
+        heat_profile_model,
+        cases,
+        ["heat.closures.convection_factor=1 [0.2, 5]"],
+        tscheng_measurements(),
+        workers=2,
+    )
+    assert r.success and len(r.residuals) == 176
+    lo, hi = r.ci95[0]
+    assert 0.8 < r.x[0] < 1.05 and lo < r.x[0] < hi and hi - lo < 0.2
+    assert np.sqrt(np.mean(r.residuals["residual"] ** 2)) < 8
+
+
 def test_calibrate_command_joint_fit_of_two_cases(tmp_path, capsys):
     import copy
 

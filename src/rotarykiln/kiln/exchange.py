@@ -286,6 +286,9 @@ class CrossSectionExchange:
             h_gb = tscheng_watkinson_gas_bed_nusselt(re, re_w, g.fill, check=check) * kg / De
         else:
             h_gb = gorog_gas_bed_h(gas.mass_flux, check=check) * np.ones_like(tg)
+        if c.convection_factor != 1.0:
+            h_gw = c.convection_factor * h_gw
+            h_gb = c.convection_factor * h_gb
         t_film = 0.5 * (tw + tb)
         kb = self.bed_conductivity_at(gas, t_film)
         rho_c = self.bed.bulk_density * self.bed.phase_cp(tb)

@@ -37,7 +37,9 @@ class Closures:
     ``covered_wall`` in {li2005, tscheng1979, wachters_kramers1964}; ``radiation`` on/off;
     ``gas_emissivity`` in {johansson2011, smith1982} or a constant in [0, 1);
     ``bed_conductivity`` in {given, maxwell, zehner_schlunder} (``given`` uses the measured
-    bulk value of the solid, falling back to zehner_schlunder).
+    bulk value of the solid, falling back to zehner_schlunder); ``convection_factor`` (-, > 0,
+    default 1: the correlations as published) multiplies the gas-wall and gas-bed convection
+    coefficients, a handle for calibration to plant data, not a default to change.
     """
 
     gas_wall: str = "tscheng1979"
@@ -46,6 +48,7 @@ class Closures:
     radiation: bool = True
     gas_emissivity: str | float = "johansson2011"
     bed_conductivity: str = "given"
+    convection_factor: float = 1.0
 
     def __post_init__(self):
         for name, value, allowed in (
@@ -67,6 +70,7 @@ class Closures:
             check_range(
                 "heat.closures.gas_emissivity", self.gas_emissivity, 0.0, 1.0, closed_low=True
             )
+        check_range("heat.closures.convection_factor", self.convection_factor, 0.0, 100.0)
 
     @classmethod
     def from_case(cls, section) -> Closures:
