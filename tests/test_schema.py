@@ -73,7 +73,7 @@ def test_the_shipped_schema_is_the_generated_one():
     shipped = json.loads(shipped_schema_path().read_text(encoding="utf-8"))
     assert shipped == json.loads(json.dumps(SCHEMA)), (
         "src/rotarykiln/case.schema.json is stale: regenerate it with "
-        "`rotarykiln schema --out src/rotarykiln/case.schema.json`"
+        "`make schema` (rotarykiln schema --out src/rotarykiln/case.schema.json)"
     )
 
 
