@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 DEMO_OUT ?= demo-output
 
-.PHONY: demo test bench lint format clean
+.PHONY: demo test bench lint format schema clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -17,7 +17,7 @@ $(STAMP): pyproject.toml | $(BIN)/python
 
 demo: $(STAMP)
 	$(BIN)/rotarykiln demo --out $(DEMO_OUT)
-	@echo "demo results and plots written to $(DEMO_OUT)/"
+	@echo "demo results, plots and report written to $(DEMO_OUT)/ (open $(DEMO_OUT)/report.html)"
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks docs/scripts examples
@@ -34,6 +34,9 @@ lint: $(STAMP)
 format: $(STAMP)
 	$(BIN)/ruff check --fix src tests benchmarks docs/scripts examples
 	$(BIN)/ruff format src tests benchmarks docs/scripts examples
+
+schema: $(STAMP)  # after a change to the case models (tests/test_schema.py checks it)
+	$(BIN)/rotarykiln schema --out src/rotarykiln/case.schema.json
 
 clean:
 	rm -rf $(VENV) $(DEMO_OUT) build dist src/*.egg-info

@@ -35,6 +35,7 @@ from rotarykiln.units import EXAMPLES, KINDS, UNIT_REQUIRED, to_si
 __all__ = [
     "DISPLAY_UNITS",
     "SCHEMA_DIALECT",
+    "case_hash",
     "case_json_schema",
     "case_to_yaml",
     "dump_case",
@@ -374,3 +375,34 @@ def write_case(case: BaseModel, path: str | os.PathLike) -> Path:
     from rotarykiln.outputs import write_text_atomic
 
     return write_text_atomic(path, case_to_yaml(case))
+
+
+def case_hash(case: BaseModel) -> str:
+    """The SHA-256 of a validated case: the same for every file that gives the same case.
+
+    The hash is taken over the canonical JSON of the validated values (SI floats, every field
+    including defaults, keys sorted), so comments, units and key order of the file do not matter.
+
+    Parameters
+    ----------
+    case : Case
+        A validated :class:`rotarykiln.case.Case`.
+
+    Returns
+    -------
+    str
+        64 hexadecimal digits.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case, parse_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> case = load_case(builtin_case_path("heat/barr_T4"))
+    >>> case_hash(parse_case(dump_case(case))) == case_hash(case)
+    True
+    """
+    import hashlib
+    import json
+
+    text = json.dumps(case.model_dump(mode="json"), sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()

@@ -2,7 +2,7 @@
 
 The demonstration is Tscheng's hot-air pilot kiln, run A16 (built-in case ``heat/tscheng_A16``):
 the steady counter-current heat model from the measured inputs, with the measured gas, bed and wall
-temperatures overlaid on the computed profiles.
+temperatures overlaid on the computed profiles, and the HTML report of the run (``report.html``).
 """
 
 from __future__ import annotations
@@ -24,7 +24,8 @@ def register(sub) -> None:
         "demo",
         help="run the built-in demonstration case",
         description="Run Tscheng's hot-air pilot kiln (run A16, built-in case heat/tscheng_A16): "
-        "heat profiles with the measured temperatures, regime map, cross-section, summary.",
+        "heat profiles with the measured temperatures, regime map, cross-section, summary, and "
+        "the HTML report of the run (report.html).",
     )
     p.add_argument("--out", default="demo-output", help="output folder (default: demo-output)")
     p.set_defaults(func=run)
@@ -35,7 +36,7 @@ def run(args: argparse.Namespace) -> int:
     case = load_case(path)
     out = out_dir(args.out, "demo-output")
     write_text_atomic(out / "case.yaml", path.read_text(encoding="utf-8"))
-    summary = run_case(case, out)
+    summary = run_case(case, out, report=True, source=DEMO_CASE)
     print(format_table(summary))
-    print(f"\ndemo results written to {out}/")
+    print(f"\ndemo results written to {out}/ (open {out / 'report.html'} in a browser)")
     return 0

@@ -7,8 +7,10 @@ validated case and the output folder and returns a dict of summary values to mer
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import sys
+import warnings
 from pathlib import Path
 
 from rotarykiln.case import load_case
@@ -39,30 +41,69 @@ def register(sub) -> None:
     p.add_argument("--out", help="output folder (default: <case name>-results)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
     p.add_argument("--no-plots", action="store_true", help="do not write figures")
+    p.add_argument(
+        "--report",
+        action="store_true",
+        help="also write report.html: case, warnings, summaries and figures in one offline file",
+    )
     p.set_defaults(func=run)
 
 
-def run_case(case, out: Path, *, plots: bool = True) -> dict:
-    """Run every model a validated case asks for; write summary and figures to ``out``."""
-    summary = case_summary(case)
-    for section, target in RUNNERS.items():
-        if getattr(case, section, None) is not None:
-            module, func = target.split(":")
-            summary.update(getattr(importlib.import_module(module), func)(case, out) or {})
-    write_json_atomic(out / "summary.json", summary)
-    write_text_atomic(out / "summary.txt", format_table(summary) + "\n")
-    if plots and case.bed is not None:
-        import matplotlib.pyplot as plt
+def run_case(
+    case, out: Path, *, plots: bool = True, report: bool = False, source: str | None = None
+) -> dict:
+    """Run every model a validated case asks for; write summary and figures to ``out``.
 
-        from rotarykiln.plot import cross_section_figure, regime_map_figure
+    With ``report``, also write ``out/report.html`` (:mod:`rotarykiln.report_html`): the
+    warnings of the run are recorded for it (and still shown as usual), ``source`` names the case.
+    """
+    before = _stamps(out) if report else {}
+    recorder = warnings.catch_warnings(record=True) if report else contextlib.nullcontext([])
+    with recorder as caught:
+        summary = case_summary(case)
+        sections = {"case": dict(summary)}
+        for section, target in RUNNERS.items():
+            if getattr(case, section, None) is not None:
+                module, func = target.split(":")
+                sections[section] = getattr(importlib.import_module(module), func)(case, out) or {}
+                summary.update(sections[section])
+        write_json_atomic(out / "summary.json", summary)
+        write_text_atomic(out / "summary.txt", format_table(summary) + "\n")
+        if plots and case.bed is not None:
+            import matplotlib.pyplot as plt
 
-        for name, fig in (
-            ("regime_map.png", regime_map_figure(case.bed.fill, summary["froude"])),
-            ("cross_section.png", cross_section_figure(case.bed.fill, case.kiln.diameter / 2)),
-        ):
-            save_figure_atomic(out / name, fig)
-            plt.close(fig)
+            from rotarykiln.plot import cross_section_figure, regime_map_figure
+
+            for name, fig in (
+                ("regime_map.png", regime_map_figure(case.bed.fill, summary["froude"])),
+                ("cross_section.png", cross_section_figure(case.bed.fill, case.kiln.diameter / 2)),
+            ):
+                save_figure_atomic(out / name, fig)
+                plt.close(fig)
+    if report:
+        for w in caught:  # recorded for the report; shown as they would have been
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+        from rotarykiln.report_html import write_html_report
+
+        written = [p for p, t in _stamps(out).items() if before.get(p) != t]
+        figures = [p for p in written if p.suffix.lower() in (".png", ".svg", ".jpg", ".jpeg")]
+        write_html_report(
+            out / "report.html",
+            case,
+            sections=sections,
+            warnings=[str(w.message) for w in caught],
+            figures=figures,
+            files=[p.name for p in written if p not in figures] + ["report.html"],
+            source=source,
+        )
     return summary
+
+
+def _stamps(out: Path) -> dict[Path, int]:
+    """Files of ``out`` and their modification times (to tell what a run wrote)."""
+    return {
+        p: p.stat().st_mtime_ns for p in sorted(out.iterdir()) if p.is_file() and p.name[0] != "."
+    }
 
 
 def case_path(spec: str) -> Path:
@@ -87,7 +128,7 @@ def case_path(spec: str) -> Path:
 def run(args: argparse.Namespace) -> int:
     case = load_case(case_path(args.case))
     out = out_dir(args.out, f"{Path(args.case).stem}-results")
-    summary = run_case(case, out, plots=not args.no_plots)
+    summary = run_case(case, out, plots=not args.no_plots, report=args.report, source=args.case)
     if args.json:
         print_json(summary)
     else:

@@ -1,0 +1,188 @@
+"""The HTML report of a run: one self-contained file to read offline or send to a colleague.
+
+``rotarykiln run CASE --report`` (and ``rotarykiln demo``) write ``report.html`` beside the other
+results: the case with units, the warnings raised during the run, the summary table of every
+section run (with the unit of each value), the figures the run wrote (embedded as base64 PNG or
+inline SVG), the package version and the hash of the case. The page is rendered with jinja2 from
+``rotarykiln/templates/report.html``; it loads nothing from the network.
+"""
+
+from __future__ import annotations
+
+import base64
+import datetime as _dt
+import os
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import Any
+
+__all__ = ["render_html_report", "split_unit", "write_html_report"]
+
+# key suffix -> unit, longest first (the naming convention of the summaries: "length_m",
+# "heat_gas_outlet_flow_kg_s", "speed_rpm"...)
+_UNIT_SUFFIXES = [
+    ("_J_kg_K", "J/(kg K)"),
+    ("_W_m2_K", "W/(m2 K)"),
+    ("_W_m_K", "W/(m K)"),
+    ("_kg_m3", "kg/m3"),
+    ("_rad_s", "rad/s"),
+    ("_kg_s", "kg/s"),
+    ("_kg_h", "kg/h"),
+    ("_W_m2", "W/m2"),
+    ("_J_kg", "J/kg"),
+    ("_W_m", "W/m"),
+    ("_m_s", "m/s"),
+    ("_rpm", "rpm"),
+    ("_deg", "deg"),
+    ("_rad", "rad"),
+    ("_min", "min"),
+    ("_Pa", "Pa"),
+    ("_m2", "m2"),
+    ("_m3", "m3"),
+    ("_mm", "mm"),
+    ("_kg", "kg"),
+    ("_K", "K"),
+    ("_W", "W"),
+    ("_J", "J"),
+    ("_m", "m"),
+    ("_s", "s"),
+    ("_h", "h"),
+]
+
+
+def split_unit(key: str) -> tuple[str, str]:
+    """Split a summary key into its name and its unit (``"length_m"`` -> ``("length", "m")``).
+
+    Parameters
+    ----------
+    key : str
+        A summary key following the naming convention ``<name>_<unit>``.
+
+    Returns
+    -------
+    tuple of str
+        The name with spaces for underscores, and the unit (``""`` when the key has none).
+
+    Examples
+    --------
+    >>> split_unit("heat_gas_outlet_flow_kg_s")
+    ('heat gas outlet flow', 'kg/s')
+    >>> split_unit("froude")
+    ('froude', '')
+    """
+    for suffix, unit in _UNIT_SUFFIXES:
+        if key.endswith(suffix) and len(key) > len(suffix):
+            return key[: -len(suffix)].replace("_", " "), unit
+    return key.replace("_", " "), ""
+
+
+def _shown(value: Any) -> str:
+    """A summary value as printed (floats with 5 significant digits, as in summary.txt)."""
+    from rotarykiln.report import format_table
+
+    return format_table({"v": value}).split("  ", 1)[1]
+
+
+def _rows(section: str, table: Mapping[str, Any]) -> list[dict[str, str]]:
+    rows = []
+    for key, value in table.items():
+        name, unit = split_unit(str(key).removeprefix(f"{section}_"))
+        exact = repr(float(value)) if isinstance(value, float) else str(value)
+        rows.append(
+            {"key": str(key), "name": name, "unit": unit, "value": _shown(value), "exact": exact}
+        )
+    return rows
+
+
+def _figure(path: Path) -> dict[str, str]:
+    title = path.stem.replace("_", " ")
+    if path.suffix.lower() == ".svg":
+        text = path.read_text(encoding="utf-8")
+        start = text.find("<svg")
+        return {"title": title, "file": path.name, "svg": text[start:] if start >= 0 else text}
+    data = base64.b64encode(path.read_bytes()).decode("ascii")
+    mime = {".png": "image/png", ".jpg": "image/jpeg", ".jpeg": "image/jpeg"}.get(
+        path.suffix.lower(), "application/octet-stream"
+    )
+    return {"title": title, "file": path.name, "src": f"data:{mime};base64,{data}"}
+
+
+def render_html_report(
+    case,
+    *,
+    sections: Mapping[str, Mapping[str, Any]],
+    warnings: Iterable[str] = (),
+    figures: Iterable[str | os.PathLike] = (),
+    files: Iterable[str] = (),
+    source: str | None = None,
+) -> str:
+    """The HTML text of the report of a run.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case that was run.
+    sections : mapping
+        Section name (``"case"``, ``"heat"``, ``"chemistry"``...) -> its flat summary dict.
+    warnings : iterable of str
+        The warnings raised during the run (shown once each, in order).
+    figures : iterable of path
+        Figure files to embed (PNG, JPEG or SVG).
+    files : iterable of str
+        Names of the other files the run wrote (listed, not embedded).
+    source : str, optional
+        Where the case came from (a file path or a built-in name).
+
+    Returns
+    -------
+    str
+        A complete HTML document that needs no other file.
+    """
+    import jinja2
+
+    from rotarykiln import __version__
+    from rotarykiln.case_io import case_hash, case_to_yaml
+
+    env = jinja2.Environment(
+        loader=jinja2.PackageLoader("rotarykiln", "templates"),
+        autoescape=jinja2.select_autoescape(["html"]),
+        trim_blocks=True,
+        lstrip_blocks=True,
+    )
+    shown_warnings = list(dict.fromkeys(str(w) for w in warnings))
+    return env.get_template("report.html").render(
+        case=case,
+        case_yaml=case_to_yaml(case),
+        case_hash=case_hash(case),
+        source=source,
+        version=__version__,
+        created=_dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC"),
+        warnings=shown_warnings,
+        sections=[
+            {"name": name, "rows": _rows(name, table)} for name, table in sections.items() if table
+        ],
+        figures=[_figure(Path(p)) for p in figures],
+        files=sorted(files),
+    )
+
+
+def write_html_report(path: str | os.PathLike, case, **kwargs) -> Path:
+    """Render the report (:func:`render_html_report`) and write it atomically to ``path``.
+
+    Parameters
+    ----------
+    path : str or Path
+        The HTML file to write (``<out>/report.html``).
+    case : Case
+        The validated case that was run.
+    **kwargs
+        Passed to :func:`render_html_report`.
+
+    Returns
+    -------
+    Path
+        The path written.
+    """
+    from rotarykiln.outputs import write_text_atomic
+
+    return write_text_atomic(path, render_html_report(case, **kwargs))
