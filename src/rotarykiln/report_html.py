@@ -12,6 +12,7 @@ from __future__ import annotations
 import base64
 import datetime as _dt
 import os
+import re
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
@@ -22,6 +23,10 @@ __all__ = ["render_html_report", "split_unit", "write_html_report"]
 # "heat_gas_outlet_flow_kg_s", "speed_rpm"...)
 _UNIT_SUFFIXES = [
     ("_J_kg_K", "J/(kg K)"),
+    ("_percent", "%"),
+    ("_m2_s", "m2/s"),
+    ("_m3_s", "m3/s"),
+    ("_m3_h", "m3/h"),
     ("_W_m2_K", "W/(m2 K)"),
     ("_W_m_K", "W/(m K)"),
     ("_kg_m3", "kg/m3"),
@@ -36,6 +41,10 @@ _UNIT_SUFFIXES = [
     ("_deg", "deg"),
     ("_rad", "rad"),
     ("_min", "min"),
+    ("_1_s", "1/s"),
+    ("_kW", "kW"),
+    ("_MW", "MW"),
+    ("_s2", "s2"),
     ("_Pa", "Pa"),
     ("_m2", "m2"),
     ("_m3", "m3"),
@@ -67,13 +76,23 @@ def split_unit(key: str) -> tuple[str, str]:
     --------
     >>> split_unit("heat_gas_outlet_flow_kg_s")
     ('heat gas outlet flow', 'kg/s')
+    >>> split_unit("rtd_dispersion_m2_s")
+    ('rtd dispersion', 'm2/s')
+    >>> split_unit("onset_T_bed_K_drying_ahmad")
+    ('onset T bed (drying ahmad)', 'K')
     >>> split_unit("froude")
     ('froude', '')
     """
     for suffix, unit in _UNIT_SUFFIXES:
         if key.endswith(suffix) and len(key) > len(suffix):
             return key[: -len(suffix)].replace("_", " "), unit
+    infix = _INFIX_UNIT.match(key)  # "onset_z_m_drying_ahmad": the unit, then a reaction name
+    if infix:
+        return f"{infix['name']} ({infix['what']})".replace("_", " "), infix["unit"]
     return key.replace("_", " "), ""
+
+
+_INFIX_UNIT = re.compile(r"^(?P<name>.+?_(?:z|T_bed))_(?P<unit>m|K)_(?P<what>\w+)$")
 
 
 def _shown(value: Any) -> str:
@@ -83,10 +102,14 @@ def _shown(value: Any) -> str:
     return format_table({"v": value}).split("  ", 1)[1]
 
 
-def _rows(section: str, table: Mapping[str, Any]) -> list[dict[str, str]]:
+def _rows(table: Mapping[str, Any]) -> list[dict[str, str]]:
+    keys = [str(k) for k in table]
+    first = {k.split("_", 1)[0] for k in keys}
+    # the prefix every key of a section's summary shares ("heat_", "reacting_") is not repeated
+    prefix = f"{first.pop()}_" if len(first) == 1 and all("_" in k for k in keys) else ""
     rows = []
     for key, value in table.items():
-        name, unit = split_unit(str(key).removeprefix(f"{section}_"))
+        name, unit = split_unit(str(key).removeprefix(prefix))
         exact = repr(float(value)) if isinstance(value, float) else str(value)
         rows.append(
             {"key": str(key), "name": name, "unit": unit, "value": _shown(value), "exact": exact}
@@ -159,7 +182,7 @@ def render_html_report(
         created=_dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC"),
         warnings=shown_warnings,
         sections=[
-            {"name": name, "rows": _rows(name, table)} for name, table in sections.items() if table
+            {"name": name, "rows": _rows(table)} for name, table in sections.items() if table
         ],
         figures=[_figure(Path(p)) for p in figures],
         files=sorted(files),
