@@ -140,7 +140,8 @@ class Kiln:
     cell centres, normalised; None: uniform), e.g. a burner's burn-out;
     ``flame``: the :class:`~rotarykiln.kiln.flame.Flame` of a burner (heating values and jet
     numbers for the energy sheet and the summary); ``measurements``: measured profiles
-    (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots.
+    (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots; ``section``: the case-file
+    section named in input errors (``chemistry`` or ``heat``).
     """
 
     length: float
@@ -177,39 +178,41 @@ class Kiln:
     heat_release_profile: object | None = None
     flame: object | None = None
     measurements: dict | None = None
+    section: str = "chemistry"
 
     def __post_init__(self):
+        sec = self.section
         check_positive("kiln.length", self.length, "m")
         check_positive("kiln.radius", self.radius, "m")
         check_positive("operation.speed", self.omega, "rad/s")
         if isinstance(self.fill, int | float):
-            check_range("chemistry.fill", self.fill, 0.0, 0.5, closed_high=True)
+            check_range(f"{sec}.fill", self.fill, 0.0, 0.5, closed_high=True)
         check_nonnegative("heat.heat_release", self.heat_release, "W")
-        check_positive("chemistry.bed_velocity", self.bed_velocity, "m/s")
-        check_positive("chemistry.feed.temperature", self.feed_temperature, "K")
-        check_positive("chemistry.gas.inlet_temperature", self.gas_inlet_temperature, "K")
+        check_positive(f"{sec}.bed_velocity", self.bed_velocity, "m/s")
+        check_positive(f"{sec}.feed.temperature", self.feed_temperature, "K")
+        check_positive(f"{sec}.gas.inlet_temperature", self.gas_inlet_temperature, "K")
         check_positive("material.bulk_density", self.bulk_density, "kg/m3")
-        check_positive("chemistry.solid.thermal_conductivity", self.bed_conductivity, "W/(m K)")
-        check_range("chemistry.solid.emissivity", self.bed_emissivity, 0.0, 1.0, closed_high=True)
+        check_positive(f"{sec}.solid.thermal_conductivity", self.bed_conductivity, "W/(m K)")
+        check_range(f"{sec}.solid.emissivity", self.bed_emissivity, 0.0, 1.0, closed_high=True)
         for name, eps in (
-            ("chemistry.wall_emissivity", self.wall_emissivity),
-            ("chemistry.shell_emissivity", self.shell_emissivity),
+            (f"{sec}.wall_emissivity", self.wall_emissivity),
+            (f"{sec}.shell_emissivity", self.shell_emissivity),
         ):
             if eps is not None:
                 check_range(name, eps, 0.0, 1.0, closed_high=True)
-        check_nonnegative("chemistry.wind_speed", self.wind_speed, "m/s")
+        check_nonnegative(f"{sec}.wind_speed", self.wind_speed, "m/s")
         if not isinstance(self.closures, Closures):
-            raise InputError("chemistry.closures", self.closures, "a Closures object")
+            raise InputError(f"{sec}.closures", self.closures, "a Closures object")
         if self.closures.bed_conductivity != "given" and self.bed_material is None:
             raise InputError(
-                "chemistry.closures.bed_conductivity",
+                f"{sec}.closures.bed_conductivity",
                 self.closures.bed_conductivity,
                 "given (the reacting kiln uses chemistry.solid.thermal_conductivity)",
             )
         check_positive("material.particle_size", self.particle_diameter, "m")
-        check_nonnegative("chemistry.wall_loss.U", self.wall_loss_u, "W/(m2 K)")
-        check_positive("chemistry.wall_loss.ambient_temperature", self.ambient_temperature, "K")
-        check_positive("chemistry.gas.pressure", self.pressure, "Pa")
+        check_nonnegative(f"{sec}.wall_loss.U", self.wall_loss_u, "W/(m2 K)")
+        check_positive(f"{sec}.wall_loss.ambient_temperature", self.ambient_temperature, "K")
+        check_positive(f"{sec}.gas.pressure", self.pressure, "Pa")
         if (
             self.heat_release == 0.0
             and not self.mechanism.reactions
@@ -223,8 +226,8 @@ class Kiln:
             )
         sp = self.mechanism.species
         for label, flows, phase in (
-            ("chemistry.feed", self.feed, "bed"),
-            ("chemistry.gas", self.gas_in, "gas"),
+            (f"{sec}.feed", self.feed, "bed"),
+            (f"{sec}.gas", self.gas_in, "gas"),
         ):
             if not flows or sum(flows.values()) <= 0:
                 raise InputError(f"{label} mass flow", flows, "> 0 kg/s in total")
@@ -233,14 +236,14 @@ class Kiln:
                     raise InputError(f"{label}.{name}", name, f"a {phase} species")
                 check_nonnegative(f"{label}.{name}", q, "kg/s")
         for name, cp in self.bed_cp.items():
-            check_positive(f"chemistry.bed_cp.{name}", cp, "J/(kg K)")
+            check_positive(f"{sec}.bed_cp.{name}", cp, "J/(kg K)")
         if self.steam_flow is not None:
-            check_nonnegative("chemistry.gas.steam_flow", self.steam_flow, "kg/s")
+            check_nonnegative(f"{sec}.gas.steam_flow", self.steam_flow, "kg/s")
         if self.gas_emissivity_law is not None:
             a, b, lo = self.gas_emissivity_law
             if not (np.isfinite(a) and np.isfinite(b) and 0 <= lo < 1):
                 raise InputError(
-                    "chemistry.gas.emissivity", self.gas_emissivity_law, "finite a, b; 0 <= min < 1"
+                    f"{sec}.gas.emissivity", self.gas_emissivity_law, "finite a, b; 0 <= min < 1"
                 )
 
     @property
@@ -327,6 +330,7 @@ class Kiln:
             closures=closures or Closures(),
             fill=fill,
             bed_velocity=1.0,
+            section=kw.pop("section", "heat"),
             **kw,
         )
         area = np.pi * probe.radius**2

@@ -110,7 +110,7 @@ class KilnResidual:
             k.layers,
             heat_release=k.heat_release,
             heat_release_profile=k.heat_release_profile,
-            section="chemistry",
+            section=k.section,
         )
         self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
         if k.layers:
