@@ -31,6 +31,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
+import reprlib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -638,12 +639,52 @@ def _format_error(model: type[BaseModel], err: dict) -> str:
     if kind == "missing":
         return f"{path}: missing (required)"
     if kind in ("model_type", "dict_type"):
-        return f"{path}: expected a mapping of keys, got {err.get('input')!r}"
+        return f"{path}: expected a mapping of keys, got {_short(err.get('input'))}"
     msg = err["msg"]
     msg = re.sub(r"^Value error, ", "", msg)
     if kind in ("quantity", "quantity_range", "number", "choice"):
         return f"{path}: {msg}"
-    return f"{path}: {err.get('input')!r}: {msg}"
+    return f"{path}: {_short(err.get('input'))}: {msg}"
+
+
+_REPR = reprlib.Repr()
+_REPR.maxlevel, _REPR.maxdict, _REPR.maxlist, _REPR.maxtuple = 3, 4, 6, 6
+_REPR.maxstring = _REPR.maxother = _REPR.maxlong = 50
+
+
+def _short(value: Any, limit: int = 80) -> str:
+    """``repr(value)`` in at most about ``limit`` characters, however large the value."""
+    try:
+        text = _REPR.repr(value)
+    except (ValueError, RecursionError):  # an int over Python's digit limit
+        return f"a {type(value).__name__} too long to show"
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _check_structure(data: Any, source: str) -> None:
+    """Refuse data (from YAML or Python) nested deeper than :data:`MAX_CASE_DEPTH` (cycles
+    included), with more than :data:`MAX_CASE_VALUES` values, or integers of more than
+    :data:`MAX_NUMBER_CHARS` digits: without recursion, in at most that many steps."""
+    stack = [(data, 1, "")]
+    count = 0
+    while stack:
+        node, depth, path = stack.pop()
+        count += 1
+        if count > MAX_CASE_VALUES:
+            raise InputError(source, message=f"{source}: more than {MAX_CASE_VALUES} values")
+        if isinstance(node, dict | list | tuple):
+            if depth > MAX_CASE_DEPTH:
+                raise InputError(
+                    path, message=f"{path}: nested deeper than {MAX_CASE_DEPTH} levels"
+                )
+            items = node.items() if isinstance(node, dict) else enumerate(node)
+            for key, value in items:
+                stack.append((value, depth + 1, f"{path}.{key}" if path else str(key)))
+        elif isinstance(node, int) and node.bit_length() > 3.33 * MAX_NUMBER_CHARS:
+            raise InputError(
+                path,
+                message=f"{path}: an integer of more than {MAX_NUMBER_CHARS} digits",
+            )
 
 
 def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case) -> Case:
@@ -659,7 +700,10 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
             source, message=f"{source}: the case is empty (it needs kiln: and operation: sections)"
         )
     if not isinstance(data, dict):
-        raise InputError(source, message=f"{source}: expected a mapping of sections, got {data!r}")
+        raise InputError(
+            source, message=f"{source}: expected a mapping of sections, got {_short(data)}"
+        )
+    _check_structure(data, source)
     try:
         return model.model_validate(data)
     except ValidationError as exc:
@@ -672,8 +716,149 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
         raise InputError(path, message=message) from None
 
 
+MAX_CASE_BYTES = 1_000_000
+"""Largest case file read, bytes (a case is a few kB; the largest built-in one is 3.5 kB)."""
+MAX_CASE_DEPTH = 20
+"""Deepest nesting of mappings and lists in a case (the built-in cases nest 6 levels)."""
+MAX_CASE_ALIASES = 100
+"""Most YAML aliases (``*name``) in a case file."""
+MAX_CASE_VALUES = 100_000
+"""Most values (keys, scalars, lists and mappings, aliases expanded) in a case (built-in: < 200)."""
+MAX_NUMBER_CHARS = 100
+"""Longest number written in a case file, characters."""
+
+
+class _LimitError(yaml.YAMLError):
+    """A case file over one of the limits above (raised while reading it)."""
+
+    def __init__(self, message: str, mark=None):
+        where = f" (line {mark.line + 1})" if mark is not None else ""
+        super().__init__(message + where)
+
+
+class _CaseLoader(yaml.SafeLoader):
+    """A YAML safe loader that refuses nesting deeper than :data:`MAX_CASE_DEPTH`, more than
+    :data:`MAX_CASE_ALIASES` aliases or :data:`MAX_CASE_VALUES` values once aliases are
+    expanded ("billion laughs"), recursive aliases, and numbers longer than
+    :data:`MAX_NUMBER_CHARS` characters, before they reach a recursion limit, memory or ``int()``.
+    """
+
+    def __init__(self, stream):
+        super().__init__(stream)
+        self._depth = 0
+        self._aliases = 0
+        self._values = 0
+        self._sizes: dict[int, int] = {}  # id(node) -> values in it, aliases expanded
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            event = self.peek_event()
+            node = self.anchors.get(event.anchor)
+            if node is not None:
+                size = self._sizes.get(id(node))
+                if size is None:
+                    raise _LimitError(f"alias *{event.anchor} refers to itself", event.start_mark)
+                self._aliases += 1
+                self._values += size
+                if self._aliases > MAX_CASE_ALIASES:
+                    raise _LimitError(
+                        f"more than {MAX_CASE_ALIASES} YAML aliases", event.start_mark
+                    )
+                self._check_values(event.start_mark)
+            return super().compose_node(parent, index)
+        self._depth += 1
+        if self._depth > MAX_CASE_DEPTH:
+            raise _LimitError(
+                f"nested deeper than {MAX_CASE_DEPTH} levels", self.peek_event().start_mark
+            )
+        start = self._values
+        node = super().compose_node(parent, index)
+        self._depth -= 1
+        self._values += 1
+        self._check_values(node.start_mark)
+        self._sizes[id(node)] = self._values - start
+        return node
+
+    def _check_values(self, mark) -> None:
+        if self._values > MAX_CASE_VALUES:
+            raise _LimitError(
+                f"more than {MAX_CASE_VALUES} values once YAML aliases are expanded", mark
+            )
+
+    def _short_number(self, node) -> None:
+        if len(node.value) > MAX_NUMBER_CHARS:
+            raise _LimitError(
+                f"a number of {len(node.value)} characters (at most {MAX_NUMBER_CHARS})",
+                node.start_mark,
+            )
+
+    def construct_yaml_int(self, node):
+        self._short_number(node)
+        return super().construct_yaml_int(node)
+
+    def construct_yaml_float(self, node):
+        self._short_number(node)
+        return super().construct_yaml_float(node)
+
+
+_CaseLoader.add_constructor("tag:yaml.org,2002:int", _CaseLoader.construct_yaml_int)
+_CaseLoader.add_constructor("tag:yaml.org,2002:float", _CaseLoader.construct_yaml_float)
+
+
+def read_case_yaml(path: str | Path) -> Any:
+    """Read a YAML case file into Python objects, within the limits above (not validated).
+
+    Raises
+    ------
+    InputError
+        One line naming the file: missing, unreadable, larger than :data:`MAX_CASE_BYTES`, not
+        UTF-8, malformed YAML, or over a limit of :class:`_CaseLoader`.
+    """
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if size > MAX_CASE_BYTES:
+            raw = b""
+        else:
+            with path.open("rb") as fh:  # at most the limit + 1 byte: /dev/zero, a growing file
+                raw = fh.read(MAX_CASE_BYTES + 1)
+    except FileNotFoundError:
+        raise InputError(str(path), message=f"{path}: no such case file") from None
+    except OSError as exc:
+        raise InputError(str(path), message=f"{path}: cannot read ({exc.strerror})") from None
+    if size > MAX_CASE_BYTES or len(raw) > MAX_CASE_BYTES:
+        shown = f"{size / 1e6:.3g} MB" if size > MAX_CASE_BYTES else "more than that"
+        raise InputError(
+            str(path),
+            message=f"{path}: {shown} is too large for a case file (at most "
+            f"{MAX_CASE_BYTES / 1e6:g} MB; a case is a few kB)",
+        )
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        raise InputError(
+            str(path),
+            message=f"{path}: not UTF-8 text (byte 0x{raw[exc.start]:02x} at line {line}); "
+            "save the case file as UTF-8",
+        ) from None
+    try:
+        return yaml.load(text, Loader=_CaseLoader)  # noqa: S506 (a SafeLoader)
+    except _LimitError as exc:
+        raise InputError(str(path), message=f"{path}: {exc}") from None
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        raise InputError(str(path), message=f"{path}: malformed YAML{where}: {problem}") from None
+    except RecursionError:  # a guard; the depth limit refuses such files first
+        raise InputError(
+            str(path), message=f"{path}: nested too deeply (at most {MAX_CASE_DEPTH} levels)"
+        ) from None
+
+
 def load_case(path: str | Path) -> Case:
-    """Read and validate a YAML case file.
+    """Read and validate a YAML case file (within the limits of :func:`read_case_yaml`).
 
     Examples
     --------
@@ -682,18 +867,4 @@ def load_case(path: str | Path) -> Case:
     >>> round(case.operation.speed, 4)
     0.1571
     """
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(str(path), message=f"{path}: no such case file") from None
-    except OSError as exc:
-        raise InputError(str(path), message=f"{path}: cannot read ({exc.strerror})") from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
-        raise InputError(str(path), message=f"{path}: malformed YAML{where}: {problem}") from None
-    return parse_case(data, source=str(path))
+    return parse_case(read_case_yaml(path), source=str(path))

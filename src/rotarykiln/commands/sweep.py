@@ -29,8 +29,6 @@ import importlib
 import sys
 from pathlib import Path
 
-import yaml
-
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.commands._args import out_dir, plain, print_json
 from rotarykiln.errors import InputError
@@ -176,10 +174,9 @@ def _load_case(spec: str) -> dict:
     path = Path(spec)
     if not path.is_file():
         path = builtin_case_path(spec)
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, yaml.YAMLError) as exc:
-        raise InputError("--case", spec, f"a readable YAML case ({exc})") from None
+    from rotarykiln.case import read_case_yaml
+
+    data = read_case_yaml(path)  # one line for a bad file: unreadable, not UTF-8, too large...
     if not isinstance(data, dict):
         raise InputError("--case", spec, "a YAML mapping")
     return data

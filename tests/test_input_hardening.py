@@ -1,0 +1,119 @@
+"""Hostile inputs (issue 15, "Inputs"): each is refused quickly with one InputError line."""
+
+import time
+from contextlib import contextmanager
+from pathlib import Path
+
+import pytest
+
+from rotarykiln.case import load_case, parse_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.errors import InputError
+
+BASE = Path(builtin_case_path("heat/tscheng_A16")).read_text(encoding="utf-8")
+
+
+@contextmanager
+def refused_quickly(*fragments: str, seconds: float = 2.0):
+    """The block raises one InputError line containing every fragment, within ``seconds``."""
+    start = time.perf_counter()
+    with pytest.raises(InputError) as info:
+        yield info
+    elapsed = time.perf_counter() - start
+    text = str(info.value)
+    assert "\n" not in text
+    for fragment in fragments:
+        assert fragment in text
+    assert elapsed < seconds, f"refused in {elapsed:.2f} s: {text}"
+
+
+# --- case files ------------------------------------------------------------------------------
+
+
+def nested_mapping(levels: int) -> str:
+    """A mapping nested ``levels`` deep, indented one space per level."""
+    lines = [" " * i + f"k{i}:" for i in range(levels)]
+    return "\n".join(lines) + "\n" + " " * levels + "x: 1\n"
+
+
+BILLION_LAUGHS = (
+    'a: &a ["lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol"]\n'
+    + "".join(
+        f"{chr(98 + i)}: &{chr(98 + i)} [" + ", ".join([f"*{chr(97 + i)}"] * 9) + "]\n"
+        for i in range(8)
+    )
+)
+
+
+@pytest.mark.parametrize(
+    ("name", "content", "fragments"),
+    [
+        ("nested.yaml", nested_mapping(1000), ["nested deeper than 20 levels"]),
+        ("flow.yaml", "kiln: " + "[" * 1000 + "]" * 1000 + "\n", ["nested deeper than 20"]),
+        ("laughs.yaml", BILLION_LAUGHS, ["more than 100000 values", "aliases"]),
+        ("big.yaml", BASE + "#" * 5_000_000 + "\n", ["5 MB is too large", "at most 1 MB"]),
+        (
+            "digits.yaml",
+            BASE.replace("name:", "x: " + "9" * 5000 + "\nname:", 1),
+            ["a number of 5000 characters (at most 100)"],
+        ),
+        (
+            "float.yaml",
+            BASE.replace("name:", "x: 0." + "1" * 500 + "\nname:", 1),
+            ["a number of 502 characters"],
+        ),
+        ("self.yaml", "kiln: &k [1, *k]\n", ["refers to itself"]),
+    ],
+)
+def test_hostile_case_files_are_refused_quickly(tmp_path, name, content, fragments):
+    path = tmp_path / name
+    path.write_text(content, encoding="utf-8")
+    with refused_quickly(str(path), *fragments):
+        load_case(path)
+
+
+def test_many_aliases_are_refused(tmp_path):
+    path = tmp_path / "aliases.yaml"
+    path.write_text("a: &a 1\nb: [" + ", ".join(["*a"] * 101) + "]\n", encoding="utf-8")
+    with refused_quickly(str(path), "more than 100 YAML aliases"):
+        load_case(path)
+
+
+def test_latin1_case_file_is_refused(tmp_path):
+    path = tmp_path / "latin1.yaml"
+    path.write_bytes(BASE.encode() + "description: caf\xe9\n".encode("latin-1"))
+    with refused_quickly(str(path), "not UTF-8", "0xe9"):
+        load_case(path)
+
+
+def test_a_few_aliases_and_the_builtin_cases_still_load(tmp_path):
+    path = tmp_path / "anchors.yaml"
+    path.write_text(
+        "kiln: {length: &d 0.4 m, diameter: *d}\noperation: {speed: 1.5 rpm}\n", encoding="utf-8"
+    )
+    case = load_case(path)
+    assert case.kiln.length == case.kiln.diameter == pytest.approx(0.4)
+    assert load_case(builtin_case_path("limestone_calcination")).chemistry is not None
+
+
+def test_python_structures_are_checked_too():
+    cyclic = []
+    cyclic.append(cyclic)
+    with refused_quickly("nested deeper than 20 levels"):
+        parse_case({"kiln": cyclic})
+    laughs = "lol"
+    for _ in range(9):
+        laughs = [laughs] * 9
+    with refused_quickly("more than 100000 values"):
+        parse_case({"kiln": laughs})
+    with refused_quickly("kiln.length: an integer of more than 100 digits"):
+        parse_case({"kiln": {"length": 10**5000}, "operation": {"speed": "1 rpm"}})
+
+
+def test_sweep_reads_its_base_case_within_the_same_limits(tmp_path):
+    from rotarykiln.commands.sweep import _load_case
+
+    path = tmp_path / "nested.yaml"
+    path.write_text(nested_mapping(1000), encoding="utf-8")
+    with refused_quickly("nested deeper than 20 levels"):
+        _load_case(str(path))
