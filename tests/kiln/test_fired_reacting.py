@@ -76,3 +76,11 @@ def test_co_current_inert_reacting_equals_heat_model_direction():
     # the counter-current solution is unchanged by the co-current code path
     a = run_reacting_case(load_case(builtin_case_path("limestone_fired")))
     assert a.gas_outlet_temperature == a.t_gas_nodes[0]
+
+
+def test_limestone_summary_speaks_of_mass_loss_not_burn_off(solution):
+    s = solution.summary()
+    assert "burn_off_percent" not in s and "production_percent" not in s
+    # CaCO3 -> CaO: 44 % of the dry feed leaves as CO2
+    assert s["dry_mass_loss_percent"] == pytest.approx(100 * (1 - 56.077 / 100.087), abs=0.1)
+    assert s["dry_mass_loss_percent"] + s["solids_yield_percent"] == pytest.approx(100.0)

@@ -175,9 +175,12 @@ class KilnSolution:
             **{f"energy_{k}": v for k, v in self.energy_sheet.items() if k != "thermal_efficiency"},
             **{f"burner_{k}": v for k, v in self.burner.items()},
         }
-        if self.reaction_rates:  # a mass-losing bed: burn-off and production (seed 004)
+        if self.reaction_rates and self.feed.get("C", 0.0) > 0:  # a carbon bed (seed 004)
             out["burn_off_percent"] = self.burn_off
             out["production_percent"] = self.production
+        elif self.reaction_rates:  # any other reacting bed: the neutral words
+            out["dry_mass_loss_percent"] = self.burn_off
+            out["solids_yield_percent"] = self.production
         for s, q in self.bed_flows.items():
             if s != MOISTURE and q[0] > 0 and q[-1] < q[0]:
                 x = self.conversion(s)
