@@ -180,3 +180,17 @@ def test_convection_factor_scales_the_gas_coefficients():
     assert np.allclose(sol.fluxes["h_gb"], 2.0 * base.fluxes["h_gb"], rtol=0.05)
     assert sol.bed_outlet_temperature > base.bed_outlet_temperature
     assert abs(sol.energy_closure) < CLOSURE_TOL
+
+
+def test_a_solution_hotter_than_every_source_is_refused():
+    from rotarykiln.kiln.residual import KilnResidual
+    from rotarykiln.kiln.solve import _check_no_hotter_than_sources
+
+    kiln = tscheng_kiln("A16")
+    res = KilnResidual(kiln, 10)
+    ok = np.full(11, 400.0)
+    _check_no_hotter_than_sources(res, ok, ok, np.full((10, 4), 400.0), 3)
+    hot = ok.copy()
+    hot[4] = kiln.gas_inlet_temperature + 50.0  # an overshooting face
+    with pytest.raises(ConvergenceError, match="unphysical solution: T_bed"):
+        _check_no_hotter_than_sources(res, hot, ok, np.full((10, 4), 400.0), 3)

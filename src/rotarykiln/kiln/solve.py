@@ -142,6 +142,7 @@ def solve_kiln(
     steady.check_finite(
         {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
     )
+    _check_no_hotter_than_sources(res, tb_n, tg_n, x[:, 2:i0], total)
     # validity ranges of the heat-transfer closures, checked once on the converged state
     g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
     geo = res.geometry(x)
@@ -217,6 +218,31 @@ def solve_kiln(
         measurements=kiln.measurements,
         fill_profile=res.geometry(x).fill * np.ones(res.n),
     )
+
+
+def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterations) -> None:
+    """Refuse a solution hotter than every heat source it has (ConvergenceError).
+
+    Without exothermic reactions the hottest a kiln can be is its hottest inlet (gas, solids,
+    ambient) or the temperature its gas would reach with all the heat released in it; a face
+    above that by more than 1 K is a discretisation artefact (an under-resolved front), never
+    physics.
+    """
+    k = res.kiln
+    if any(r.heat < 0 for r in k.mechanism.reactions):
+        return  # exothermic chemistry: the bound is an adiabatic temperature, not checked here
+    bound = max(k.gas_inlet_temperature, k.feed_temperature, k.ambient_temperature)
+    bound = max(bound, _hot_temperature(res)) + 1.0
+    for name, arr in (("T_bed", tb_n), ("T_gas", tg_n), ("T_wall", t_wall)):
+        arr = np.asarray(arr)
+        if np.any(arr > bound):
+            flat = int(np.argmax(arr.max(axis=-1) if arr.ndim > 1 else arr))
+            raise ConvergenceError(
+                f"unphysical solution: {name} reaches {float(arr.max()):.6g} K, above every "
+                f"heat source ({bound - 1.0:.6g} K), near z = {res.z_nodes[min(flat, res.n)]:.4g} m;"
+                " refine the grid (cells)",
+                iterations=iterations,
+            )
 
 
 def energy_sheet(
