@@ -117,3 +117,78 @@ def test_sweep_reads_its_base_case_within_the_same_limits(tmp_path):
     path.write_text(nested_mapping(1000), encoding="utf-8")
     with refused_quickly("nested deeper than 20 levels"):
         _load_case(str(path))
+
+
+# --- quantities ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("9**9**9 m", "is not a number followed by a unit (no arithmetic)"),
+        ("2**9999 m", "is not a number followed by a unit (no arithmetic)"),
+        ("1+2 m", "is not a number followed by a unit (no arithmetic)"),
+        ("5 m-m", "is not a number followed by a unit (no arithmetic)"),
+        ("5 m*2", "is not a number followed by a unit (no arithmetic)"),
+        ("1 m**2**9", "is not a number followed by a unit (no arithmetic)"),
+        ("(3) m", "is not a quantity with a unit"),
+        ("m", '"m" has no number, expected a length'),
+        ("1" * 100_000 + " m", "(100002 characters) is too long for a quantity (at most 64"),
+        ("0." + "1" * 5000 + " m", "too long for a quantity"),
+    ],
+)
+def test_a_quantity_is_a_number_and_a_unit_nothing_else(text, message):
+    from rotarykiln.units import to_si
+
+    with refused_quickly("kiln.length: ", message, seconds=0.5):
+        to_si("kiln.length", text, "length")
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("9**9**9 kg/h", "no arithmetic"),
+        ("12 Nm3/h+2", "no arithmetic"),
+        ("kg/h", "has no number"),
+        ("2" * 100_000 + " kg/h", "too long"),
+    ],
+)
+def test_gas_flows_are_a_number_and_a_unit_too(text, message):
+    from rotarykiln.units import gas_flow
+
+    with refused_quickly("burner.fuel_flow: ", message, seconds=0.5):
+        gas_flow(text, "burner.fuel_flow")
+
+
+def test_a_unit_without_number_is_refused_in_a_case_and_on_the_command_line(capsys):
+    from rotarykiln.cli import main
+
+    with refused_quickly('kiln.length: "m" has no number'):
+        parse_case({"kiln": {"length": "m", "diameter": "0.4 m"}, "operation": {"speed": "1 rpm"}})
+    args = ["bed", "--diameter", "m", "--length", "2 m", "--speed", "3 rpm", "--slope", "1 deg"]
+    args += ["--feed", "62 kg/h", "--density", "1500 kg/m3", "--repose", "35 deg"]
+    assert main(args) == 2
+    assert '--diameter: "m" has no number' in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "si"),
+    [
+        ("1.5 rpm", "rotation rate", 0.15707963),
+        ("62 kg/h", "mass flow", 62 / 3600),
+        ("3 %", "fraction", 0.03),
+        ("1100 degC", "temperature", 1373.15),
+        ("1100 deg C", "temperature", 1373.15),
+        ("0.4 m", "length", 0.4),
+        ("1e-3 m", "length", 1e-3),
+        ("-5 degC", "temperature", 268.15),
+        ("1.2 W/(m K)", "thermal conductivity", 1.2),
+        ("10 W/m^2K", "heat transfer coefficient", 10.0),
+        ("2 s^-1", "frequency", 2.0),
+        ("1500 kg/m3", "density", 1500.0),
+    ],
+)
+def test_the_usual_spellings_still_read(text, kind, si):
+    from rotarykiln.units import to_si
+
+    assert to_si("x", text, kind) == pytest.approx(si)

@@ -183,6 +183,51 @@ def _describe(q: pint.Quantity) -> str:
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 _BARE_POWER = re.compile(r"(?<=[A-Za-z])([23])(?![\d.])")
 _DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d*,\d")
+_NOT_FINITE = re.compile(r"^\s*[-+]?(nan|inf|infinity)\b", re.I)
+
+MAX_QUANTITY_CHARS = 64
+"""Longest quantity text read ("0.406 m" has 7 characters): longer ones are refused unparsed."""
+
+# In a unit (pint syntax, after _normalise) digits are only small powers after a unit name or a
+# parenthesis ("m**3", "s^-1") or a leading "1/" ("1/min"); with no digits, "+" or "-" left,
+# pint can only multiply and divide units: no arithmetic on numbers ("9**9**9 m", "1+2 m").
+_UNIT_POWER = re.compile(r"(?:(?<=[^\W\d_])|(?<=\)))\s*(?:\*\*|\^)\s*-?\d(?![\d.])")
+_UNIT_CHARS = re.compile(r"^(?:[^\W\d]|[\s/*.·()%°²³])*$")  # letters, _, joiners, no digit
+
+
+def _plain_unit(unit: str) -> bool:
+    """True when ``unit`` (pint syntax) names units joined by ``*``, ``/``, spaces, with small
+    powers: no number, sum or difference that pint would evaluate."""
+    rest = _UNIT_POWER.sub("", re.sub(r"^\s*1\s*/", "/", unit))
+    if not _UNIT_CHARS.match(rest) or "**" in rest or not re.search(r"[^\W\d_]|%", rest):
+        return False
+    depth = 0
+    for ch in rest:
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth < 0 or depth > 2:
+            return False
+    return depth == 0
+
+
+def _is_unit(text: str, kind: str | None) -> bool:
+    """True when ``text`` alone is a unit ("m", "kg/h"): a value that forgot its number."""
+    unit = _normalise(f"1 {text}", kind)[0][2:]
+    if not _plain_unit(unit):
+        return False
+    try:
+        ureg.Unit(unit)
+    except Exception:  # pint raises many types for garbage
+        return False
+    return True
+
+
+def _check_length(field: str, text: str, example: str = "0.4 m") -> None:
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise InputError(
+            field,
+            message=f'{field}: "{text[:20]}..." ({len(text)} characters) is too long for a '
+            f'quantity (at most {MAX_QUANTITY_CHARS}; a number and a unit such as "{example}")',
+        )
 
 
 def _alias(unit: str, kind: str | None) -> str:
@@ -211,15 +256,28 @@ def _expected(kind: str) -> str:
 
 
 def _parse(field: str, text: str, kind: str) -> pint.Quantity:
+    _check_length(field, text)
     if _DECIMAL_COMMA.match(text):
         raise InputError(
             field,
             message=f'{field}: "{text}" has a comma; use a decimal point and no thousands '
             'separator (e.g. "0.4 m", "1500 kg/m3")',
         )
+    m = _NUMBER.match(text)
+    if not m:
+        if _NOT_FINITE.match(text):
+            raise InputError(field, message=f'{field}: "{text}" is not a finite number with a unit')
+        what = "has no number" if _is_unit(text, kind) else "is not a quantity with a unit"
+        raise InputError(field, message=f'{field}: "{text}" {what}, {_expected(kind)}')
     normalised, unitless = _normalise(text, kind)
     if unitless and kind not in ("fraction", "angle"):
         raise InputError(field, message=f'{field}: "{text}" needs a unit, {_expected(kind)}')
+    if not unitless and not _plain_unit(normalised.split(" ", 1)[1]):
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" is not a number followed by a unit (no arithmetic), '
+            f"{_expected(kind)}",
+        )
     try:
         q = ureg.Quantity(normalised)
     except Exception:  # pint raises many types for garbage: report them all the same way
@@ -357,7 +415,6 @@ _SCF_UNITS = {
     "scf/day": "day",
 }
 _INSTRUMENT_UNITS = {"sccm", "sccs", "slm", "slpm", "slph", "smlpm", "sclm"}
-_NOT_FINITE = re.compile(r"^\s*[-+]?(nan|inf|infinity)\b", re.I)
 _STATE_NAMES = {
     "N": "a normal volume flow (0 degC, 101325 Pa, DIN 1343)",
     "S": "a standard volume flow (15 degC, 101325 Pa, ISO 13443)",
@@ -531,6 +588,7 @@ def gas_flow(
             f'"{value} Nm3/h")',
         )
     text = value
+    _check_length(field, text, "12 Nm3/h")
     if _DECIMAL_COMMA.match(text):
         raise InputError(
             field,
@@ -541,10 +599,8 @@ def gas_flow(
         raise InputError(field, message=f'{field}: "{text}" is not a finite number with a unit')
     m = _NUMBER.match(text)
     if not m:
-        raise InputError(
-            field,
-            message=f'{field}: "{text}" is not a flow with a unit, expected {GAS_FLOW_ACCEPTED}',
-        )
+        what = "has no number" if _is_unit(text, "mass flow") else "is not a flow with a unit"
+        raise InputError(field, message=f'{field}: "{text}" {what}, expected {GAS_FLOW_ACCEPTED}')
     number, unit = float(m.group(1)), m.group(2)
     if not unit:
         raise InputError(
@@ -580,6 +636,12 @@ def gas_flow(
         )
     else:
         pint_unit = _normalise(f"1 {unit}", "mass flow")[0][2:]
+    if not _plain_unit(pint_unit):
+        raise InputError(
+            field,
+            message=f'{field}: "{text}" is not a number followed by a unit (no arithmetic), '
+            f"expected {GAS_FLOW_ACCEPTED}",
+        )
     try:
         q = ureg.Quantity(number, pint_unit)
     except Exception:  # pint raises many types for garbage: report them all the same way
