@@ -5,6 +5,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
+import yaml
 
 from rotarykiln.case import load_case, parse_case
 from rotarykiln.cases import builtin_case_path
@@ -192,3 +193,45 @@ def test_the_usual_spellings_still_read(text, kind, si):
     from rotarykiln.units import to_si
 
     assert to_si("x", text, kind) == pytest.approx(si)
+
+
+# --- counts ----------------------------------------------------------------------------------
+
+SMALL = {"kiln": {"length": "2 m", "diameter": "0.4 m"}, "operation": {"speed": "1 rpm"}}
+
+
+@pytest.mark.parametrize("n", [0, 1, 100_001, 10**7, 1e7, 2.5, "many", None])
+def test_transport_n_points_is_bounded(n):
+    with refused_quickly(f"transport.n_points: {n} is not an integer in [2, 100000]"):
+        parse_case({**SMALL, "transport": {"n_points": n}})
+
+
+def test_weirs_need_the_scott_model():
+    weir = {"position": "1 m", "height": "0.02 m"}
+    with refused_quickly("transport: weirs are given with the kramers model: weirs need model"):
+        parse_case({**SMALL, "transport": {"weirs": [weir]}})
+    assert parse_case({**SMALL, "transport": {"model": "scott", "weirs": [weir]}}).transport
+
+
+@pytest.mark.parametrize("section", ["heat", "chemistry"])
+@pytest.mark.parametrize("cells", [3, 20_001, 10**7])
+def test_cells_are_bounded(section, cells):
+    case = "heat/tscheng_A16" if section == "heat" else "limestone_calcination"
+    data = yaml.safe_load(Path(builtin_case_path(case)).read_text(encoding="utf-8"))
+    data[section]["cells"] = cells
+    with refused_quickly(f"{section}.cells: {cells} is not an integer in [4, 20000]"):
+        parse_case(data)
+
+
+@pytest.mark.parametrize("points", ["0", "1", "100000000"])
+def test_bed_points_are_bounded(points, capsys):
+    from rotarykiln.cli import main
+
+    args = ["bed", "--diameter", "0.4 m", "--length", "2 m", "--speed", "3 rpm", "--slope", "1 deg"]
+    args += ["--feed", "62 kg/h", "--density", "1500 kg/m3", "--repose", "35 deg"]
+    start = time.perf_counter()
+    assert main([*args, "--points", points]) == 2
+    assert time.perf_counter() - start < 2
+    err = capsys.readouterr().err.strip()
+    assert err.endswith(f"--points: {points} is not an integer in [2, 100000]")
+    assert "\n" not in err

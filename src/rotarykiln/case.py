@@ -189,6 +189,30 @@ class Material(Section):
     wall_friction: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
 
 
+def _int_in(low: int, high: int):
+    """An integer field in [low, high] (an integral float such as ``1e3`` is accepted)."""
+
+    def check(v: Any) -> int:
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, int | float)
+            or (isinstance(v, float) and not (math.isfinite(v) and v.is_integer()))
+            or not low <= v <= high
+        ):
+            raise PydanticCustomError(
+                "number",
+                "{value} is not an integer in [{low}, {high}]",
+                {"value": v, "low": low, "high": high},
+            )
+        return int(v)
+
+    return Annotated[int, BeforeValidator(check)]
+
+
+Cells = _int_in(4, 20_000)
+"""Cells along the kiln (heat, chemistry): the models need 4; 20,000 is 1 mm in a 20 m kiln."""
+
+
 def _positive_number(v: Any) -> float:
     if isinstance(v, bool) or not isinstance(v, int | float) or not v > 0:
         raise PydanticCustomError("number", "{value} is not a number > 0", {"value": v})
@@ -405,7 +429,7 @@ class Heat(Section):
     wind_speed: Velocity = 0.0
     wall_emissivity: Fraction | None = None
     shell_emissivity: Fraction | None = None
-    cells: int = 100
+    cells: Cells = 100
     closures: HeatClosures = HeatClosures()
     measurements: HeatMeasurements | None = None
 
@@ -432,7 +456,15 @@ class Transport(Section):
     ) = "static"
     dam_height: Length | None = None
     weirs: list[TransportWeir] = []
-    n_points: int = 201
+    n_points: _int_in(2, 100_000) = 201
+
+    @model_validator(mode="after")
+    def _weirs_need_scott(self):
+        if self.weirs and self.model != "scott":
+            raise PydanticCustomError(
+                "number", "weirs are given with the kramers model: weirs need model: scott", {}
+            )
+        return self
 
 
 def _nonnegative_number(v: Any) -> float:
@@ -549,7 +581,7 @@ class Chemistry(Section):
     gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
     kirchhoff: bool = False
     closures: HeatClosures | None = None
-    cells: int = 100
+    cells: Cells = 100
     onset_width: Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))] = 0.0
     peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
     expected: dict[str, Any] = {}

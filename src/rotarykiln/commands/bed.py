@@ -11,9 +11,10 @@ from __future__ import annotations
 import argparse
 
 from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, plain, print_json
+from rotarykiln.errors import InputError
 from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 from rotarykiln.report import format_table
-from rotarykiln.transport.solve import solve_bed
+from rotarykiln.transport.solve import N_POINTS_RANGE, solve_bed
 from rotarykiln.units import to_si
 
 __all__ = ["register", "run", "run_case_section"]
@@ -54,7 +55,12 @@ def register(sub) -> None:
         default="static",
         help="Scott's surface friction: zero, dynamic, static (default) or a number",
     )
-    p.add_argument("--points", type=int, default=201, help="output points along the drum")
+    p.add_argument(
+        "--points",
+        type=int,
+        default=201,
+        help="output points along the drum (2 to 100000, default 201)",
+    )
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
     p.add_argument("--out", help="write profile.csv, summary.json and profile.png to this folder")
     p.set_defaults(func=run)
@@ -82,6 +88,9 @@ def _write(profile, out) -> dict:
 
 
 def run(args: argparse.Namespace) -> int:
+    low, high = N_POINTS_RANGE
+    if not low <= args.points <= high:
+        raise InputError("--points", args.points, f"an integer in [{low}, {high}]")
     q = {
         name: get_quantity(args, name, kind, required=True)
         for name, kind in (

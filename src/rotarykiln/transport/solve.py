@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import numbers
+
 from rotarykiln.errors import InputError
 from rotarykiln.transport.kramers import kramers_profile
 from rotarykiln.transport.scott import scott_profile
 from rotarykiln.transport.weirs import Weir, dam_radius_from_height
 
-__all__ = ["solve_bed"]
+__all__ = ["N_POINTS_RANGE", "solve_bed"]
+
+N_POINTS_RANGE = (2, 100_000)
+"""Accepted numbers of output points along the drum (inclusive)."""
 
 
 def solve_bed(
@@ -30,14 +35,24 @@ def solve_bed(
 
     Parameters are SI: diameter, length, dam (height above the wall) in m; speed in rad/s; slope and
     angles of repose in rad; feed in kg/s; density (bulk) in kg/m3. ``weirs`` is a sequence of
-    (distance from the discharge m, height m) pairs (Scott's model only).
+    (distance from the discharge m, height m) pairs (Scott's model only); ``n_points``, the
+    output points along the drum, an integer in :data:`N_POINTS_RANGE`.
     """
+    low, high = N_POINTS_RANGE
+    if (
+        isinstance(n_points, bool)
+        or not isinstance(n_points, numbers.Integral)
+        or not low <= n_points <= high
+    ):
+        raise InputError("n_points", n_points, f"an integer in [{low}, {high}]")
     radius = diameter / 2.0
     if dam is not None and dam > 0:
         dam_radius_from_height(dam, radius, "dam")
     if model == "kramers":
         if weirs:
-            raise InputError("weirs", "given", "used with the scott model only")
+            raise InputError(
+                "weirs", message="weirs: given with the kramers model; they need the scott model"
+            )
         return kramers_profile(
             feed,
             density=density,
@@ -47,7 +62,7 @@ def solve_bed(
             slope=slope,
             repose=repose,
             dam_height=dam,
-            n_points=max(n_points, 2),
+            n_points=n_points,
         )
     return scott_profile(
         feed,
