@@ -142,6 +142,9 @@ class Kiln:
     numbers for the energy sheet and the summary); ``measurements``: measured profiles
     (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots; ``section``: the case-file
     section named in input errors (``chemistry`` or ``heat``).
+    ``bed_dispersion`` (m2/s): axial dispersion coefficient of the bed inside the balances
+    (:mod:`rotarykiln.kiln.dispersion`; 0: plug flow; e.g. :math:`u L / Pe` with Pe from
+    :mod:`rotarykiln.rtd.correlations`).
     """
 
     length: float
@@ -179,6 +182,7 @@ class Kiln:
     flame: object | None = None
     measurements: dict | None = None
     section: str = "chemistry"
+    bed_dispersion: float = 0.0
 
     def __post_init__(self):
         sec = self.section
@@ -213,6 +217,7 @@ class Kiln:
         check_nonnegative(f"{sec}.wall_loss.U", self.wall_loss_u, "W/(m2 K)")
         check_positive(f"{sec}.wall_loss.ambient_temperature", self.ambient_temperature, "K")
         check_positive(f"{sec}.gas.pressure", self.pressure, "Pa")
+        check_nonnegative(f"{sec}.bed_dispersion", self.bed_dispersion, "m2/s")
         if (
             self.heat_release == 0.0
             and not self.mechanism.reactions

@@ -43,6 +43,7 @@ import numpy as np
 
 from rotarykiln.chemistry.mechanism import CellState as ChemState
 from rotarykiln.kiln.discretisation import cell_grid
+from rotarykiln.kiln.dispersion import dispersion_sources
 from rotarykiln.kiln.exchange import FLOW_KEYS, BulkBed, CrossSectionExchange, cell_report
 from rotarykiln.kiln.gas_mixture import GasMixture, MixtureGas
 from rotarykiln.kiln.model import Kiln
@@ -94,6 +95,7 @@ class KilnResidual:
         self.bed_scale = float(self.bed_in.sum())
         self.gas_scale = float(self.gas_inlet.sum())
         self.cp_bed = np.array([k.bed_cp.get(s, sp[s].cp) for s in self.bed_names])
+        self.disperses = np.isin(np.arange(len(self.bed_names)), self.bed_pos)
         # bed species with a temperature-dependent enthalpy (a library solid, phases included)
         self.solid_pos = [
             (i, k.bed_solids[s]) for i, s in enumerate(self.bed_names) if s in k.bed_solids
@@ -293,12 +295,22 @@ class KilnResidual:
         Hb = (qb * hb_nodes).sum(-1)
         Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
+        disp_species = None
+        if self.kiln.bed_dispersion > 0:
+            holdup = self.kiln.bulk_density * np.broadcast_to(geo.bed_area, tb.shape)
+            disp_energy, disp_species = dispersion_sources(
+                self.kiln.bed_dispersion, holdup, qb, hb_nodes, dz, self.disperses
+            )
+            r_bed = r_bed - disp_energy
         sign = 1.0 if self.kiln.counter_current else -1.0  # downstream minus upstream
         r_gas = sign * (Hg[..., :-1] - Hg[..., 1:]) + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
         parts = [r_bed[..., None], r_gas[..., None]] + [(dz * r)[..., None] for r in wall_rows]
         if self.nb:
             qv = qb[..., self.bed_pos]
-            rb = (qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]) / self.bed_scale
+            net = qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]
+            if disp_species is not None:
+                net = net - disp_species[..., self.bed_pos]
+            rb = net / self.bed_scale
             parts.append(rb * self.q_ref)
         if self.ng:
             gv = qg[..., self.gas_pos]
