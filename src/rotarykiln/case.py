@@ -416,7 +416,11 @@ class HeatMeasurements(Section):
 
 
 class Heat(Section):
-    """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md."""
+    """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md.
+
+    ``axial_dispersion``: the bed's axial dispersion inside the balances, from the correlation
+    of Sherritt et al. (2003) (``sherritt2003``, default), ``plug`` flow, or a bed Peclet
+    number u L / D (a number)."""
 
     solid: SolidName = "sand"
     solid_inlet_temperature: Temperature = 298.15
@@ -432,6 +436,10 @@ class Heat(Section):
     cells: Cells = 100
     closures: HeatClosures = HeatClosures()
     measurements: HeatMeasurements | None = None
+    axial_dispersion: (
+        Literal["sherritt2003", "plug"]
+        | Annotated[float, BeforeValidator(lambda v: _positive_number(v))]
+    ) = "sherritt2003"
 
 
 class TransportWeir(Section):
@@ -450,10 +458,7 @@ class Transport(Section):
     """
 
     model: Literal["kramers", "scott"] = "kramers"
-    friction: (
-        Literal["zero", "dynamic", "static"]
-        | Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))]
-    ) = "static"
+    friction: Annotated[str | float, BeforeValidator(lambda v: _friction(v))] = "static"
     dam_height: Length | None = None
     weirs: list[TransportWeir] = []
     n_points: _int_in(2, 100_000) = 201
@@ -465,6 +470,17 @@ class Transport(Section):
                 "number", "weirs are given with the kramers model: weirs need model: scott", {}
             )
         return self
+
+
+def _friction(v: Any) -> str | float:
+    """Scott's friction: a name or a number >= 0."""
+    if v in ("zero", "dynamic", "static"):
+        return v
+    if isinstance(v, bool) or not isinstance(v, int | float) or not v >= 0:
+        raise PydanticCustomError(
+            "number", "{value} is not zero, dynamic, static or a number >= 0", {"value": v}
+        )
+    return float(v)
 
 
 def _nonnegative_number(v: Any) -> float:
@@ -658,10 +674,79 @@ def _unwrap(annotation: Any) -> Any:
     return annotation
 
 
-def _format_error(model: type[BaseModel], err: dict) -> str:
-    loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and p.startswith("function-")))
+# What a built-in pydantic check accepts, in the words of "<field>: <value> is not <accepted>".
+_ACCEPTED = {
+    "string_type": "a text (in quotes if it looks like a number)",
+    "list_type": "a list",
+    "tuple_type": "a list",
+    "set_type": "a list",
+    "dict_type": "a mapping of keys",
+    "model_type": "a mapping of keys",
+    "model_attributes_type": "a mapping of keys",
+    "int_type": "an integer",
+    "int_parsing": "an integer",
+    "int_from_float": "an integer",
+    "int_parsing_size": "an integer of a sensible size",
+    "float_type": "a number",
+    "float_parsing": "a number",
+    "finite_number": "a finite number",
+    "bool_type": "true or false",
+    "bool_parsing": "true or false",
+    "literal_error": "one of {expected}",
+    "enum": "one of {expected}",
+    "greater_than": "> {gt}",
+    "greater_than_equal": ">= {ge}",
+    "less_than": "< {lt}",
+    "less_than_equal": "<= {le}",
+    "too_short": "a list of at least {min_length} items",
+    "too_long": "a list of at most {max_length} items",
+    "string_too_long": "a text of at most {max_length} characters",
+}
+# pydantic's names of union members and validators in an error location (not keys of the case)
+_LOC_TAG = re.compile(
+    r"^(?:str|int|float|bool|none|(?:function|literal|list|tuple|dict|set|lax-or-strict|"
+    r"json-or-python|nullable|union|tagged-union|chain)\b.*|[A-Z][A-Za-z0-9]+)$"
+)
+# a message of a nested validator that starts with its own field: "composition.N2: ..."
+_INNER_FIELD = re.compile(r"^((?:\[\d+\]|[A-Za-z_][\w()]*)(?:\.[\w()]+|\[\d+\])*): (.*)$")
+
+
+def _show(value: Any) -> str:
+    """A value as a message shows it: text in double quotes, the rest as Python writes it."""
+    if isinstance(value, str):
+        return '"' + (value if len(value) <= 50 else value[:47] + "...") + '"'
+    return _short(value)
+
+
+def _error_loc(err: dict) -> tuple:
+    """The error's location as keys and indices of the case (pydantic's tags removed)."""
+    return tuple(p for p in err["loc"] if not (isinstance(p, str) and _LOC_TAG.match(p)))
+
+
+def _accepted(err: dict) -> str | None:
+    """What a built-in pydantic check accepts, or None for other (custom) errors."""
+    template = _ACCEPTED.get(err["type"])
+    if template is None:
+        return None
+    ctx = dict(err.get("ctx") or {})
+    if "expected" in ctx:  # "'instant' or 'burnout'" -> "instant, burnout"
+        ctx["expected"] = ", ".join(re.findall(r"'([^']*)'", str(ctx["expected"]))) or ctx[
+            "expected"
+        ]
+    try:
+        return template.format(**ctx)
+    except (KeyError, IndexError):
+        return template.split(" {", 1)[0]
+
+
+def _format_error(model: type[BaseModel], err: dict, siblings: list[dict] = ()) -> str:
+    """One line "<field>: <value> is not <accepted>" (or "<field>: missing (required)") for a
+    pydantic error; ``siblings``, the other errors at the same location (union members), add
+    what they accept."""
+    loc = _error_loc(err)
     path = ".".join(str(p) for p in loc) or "(top level)"
     kind = err["type"]
+    value = err.get("input")
     if kind == "extra_forbidden":
         owner = _model_at(model, loc)
         names = list(owner.model_fields) if owner else []
@@ -670,13 +755,28 @@ def _format_error(model: type[BaseModel], err: dict) -> str:
         return f"{path}: unknown key{hint} (accepted keys: {', '.join(names)})"
     if kind == "missing":
         return f"{path}: missing (required)"
-    if kind in ("model_type", "dict_type"):
-        return f"{path}: expected a mapping of keys, got {_short(err.get('input'))}"
-    msg = err["msg"]
-    msg = re.sub(r"^Value error, ", "", msg)
-    if kind in ("quantity", "quantity_range", "number", "choice"):
-        return f"{path}: {msg}"
-    return f"{path}: {_short(err.get('input'))}: {msg}"
+    accepted = _accepted(err)
+    if accepted is not None:
+        others = [a for e in siblings if (a := _accepted(e)) and a != accepted]
+        accepted = " or ".join(dict.fromkeys([accepted, *others]))
+        if value is None:
+            return f"{path}: empty, expected {accepted}"
+        return f"{path}: {_show(value)} is not {accepted}"
+    msg = re.sub(r"^Value error, ", "", err["msg"])
+    ctx = err.get("ctx") or {}
+    if kind == "number" and "value" in ctx and msg.startswith(str(ctx["value"])):
+        # custom checks write {value} with str(): quote text, shorten the rest
+        shown = "None" if ctx["value"] is None else _show(ctx["value"])
+        msg = shown + msg[len(str(ctx["value"])) :]
+    inner = _INNER_FIELD.match(msg)
+    if inner and kind in ("quantity", "number", "choice"):  # "composition.N2: ..." of a field
+        field, msg = inner.groups()
+        last = str(loc[-1]) if loc else ""
+        if field == last or field.startswith((f"{last}.", f"{last}[")):
+            field = field[len(last) :]
+        path += field if field.startswith(("[", ".")) or not field else f".{field}"
+    msg = re.sub(r"(^|: )None is not (?=\S)", r"\1empty, expected ", msg)
+    return f"{path}: {msg}"
 
 
 _REPR = reprlib.Repr()
@@ -719,6 +819,16 @@ def _check_structure(data: Any, source: str) -> None:
             )
 
 
+def _error_rank(err: dict) -> int:
+    """Unknown keys first (they explain "missing" ones), a union's model member before its
+    name-list member when a mapping was given, pydantic's type checks last."""
+    if err["type"] == "extra_forbidden":
+        return 0
+    if err["type"] == "choice" and not isinstance(err.get("input"), str):
+        return 3
+    return 2 if err["type"] in _ACCEPTED else 1
+
+
 def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case) -> Case:
     """Validate a mapping (parsed YAML) into a :class:`Case`.
 
@@ -739,11 +849,14 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        # a misspelt key also makes the real key "missing": report the misspelling first
-        errors = sorted(exc.errors(), key=lambda e: e["type"] != "extra_forbidden")
-        first = _format_error(model, errors[0])
-        more = f" (and {len(errors) - 1} more problem{'s' if len(errors) > 2 else ''})"
-        message = first + (more if len(errors) > 1 else "")
+        # a misspelt key also makes the real key "missing": report the misspelling first; a
+        # union's members each report an error at one place: count the place once
+        errors = sorted(exc.errors(), key=_error_rank)
+        places = list(dict.fromkeys(_error_loc(e) for e in errors))
+        siblings = [e for e in errors[1:] if _error_loc(e) == places[0]]
+        first = _format_error(model, errors[0], siblings)
+        n = len(places) - 1
+        message = first + (f" (and {n} more problem{'s' if n > 1 else ''})" if n else "")
         path = first.split(":", 1)[0]
         raise InputError(path, message=message) from None
 

@@ -123,6 +123,7 @@ def _same_kiln(gas: str, closures: Closures, t_gas: float | None):
         gas_inlet_temperature=t_gas or base.gas_inlet_temperature,
         closures=closures,
         measurements=None,
+        bed_dispersion=0.0,  # plug flow, as the kiln built field by field below
     )
     # calcination has nothing to calcine: the feed is inert, every rate is zero
     mech = Mechanism.builtin("calcination_luisser")

@@ -8,6 +8,7 @@ does not react (:meth:`~rotarykiln.kiln.model.Kiln.inert`) from a :class:`rotary
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -133,7 +134,20 @@ def heat_kiln_from_case(case) -> tuple[Kiln, int]:
         name=case.name,
         **kw,
     )
-    return kiln, int(h.cells)
+    return dataclasses.replace(kiln, bed_dispersion=_bed_dispersion(case, kiln)), int(h.cells)
+
+
+def _bed_dispersion(case, kiln) -> float:
+    """Axial dispersion coefficient of the bed (m2/s) of ``heat.axial_dispersion``."""
+    from rotarykiln.rtd.correlations import sherritt_dispersion
+
+    choice = case.heat.axial_dispersion
+    if choice == "plug":
+        return 0.0
+    if choice == "sherritt2003":
+        dp = kiln.particle_diameter
+        return float(sherritt_dispersion(kiln.omega, 2.0 * kiln.radius, dp, kiln.mean_fill))
+    return kiln.bed_velocity * kiln.length / float(choice)  # a given Peclet number
 
 
 def run_heat_case(case) -> KilnSolution:

@@ -12,6 +12,7 @@ number, not fitted to the 44 runs. See docs/validation.md.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
@@ -25,6 +26,7 @@ from rotarykiln.kiln.model import Closures, Kiln
 from rotarykiln.materials.gas import air_table
 from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.materials.solids import load_solid
+from rotarykiln.rtd.correlations import sherritt_dispersion
 
 #: Dry air by mole, the gas of Tscheng's kiln.
 AIR = "O2:0.2095, N2:0.7808, AR:0.0097"
@@ -161,7 +163,12 @@ def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Kil
         name=f"Tscheng 1978 run {run}",
     )
     kw.update(overrides)
-    return Kiln.inert(**kw)
+    kiln = Kiln.inert(**kw)
+    if "bed_dispersion" in overrides:
+        return kiln
+    # the bed's axial dispersion of Sherritt et al. (2003), as heat: cases take by default
+    d = sherritt_dispersion(kiln.omega, 2.0 * kiln.radius, kiln.particle_diameter, kiln.mean_fill)
+    return dataclasses.replace(kiln, bed_dispersion=float(d))
 
 
 @dataclass(frozen=True)
