@@ -231,8 +231,11 @@ def _library_name(filename: str):
     def check(v: Any) -> str:
         names = sorted(load_library(filename))
         if v not in names:
+            shown = "None" if v is None else _show(v)  # None: "empty, expected one of ..."
             raise PydanticCustomError(
-                "choice", '"{value}" is not one of {names}', {"value": v, "names": ", ".join(names)}
+                "choice",
+                "{value} is not one of {names}",
+                {"value": shown, "names": ", ".join(names)},
             )
         return v
 
@@ -415,6 +418,17 @@ class HeatMeasurements(Section):
     wall_interface: int = 0
 
 
+class HeaterZoneSection(Section):
+    """An electric heater zone on the shell: from ``start`` to ``end`` (m from the solids inlet)
+    with a ``power`` ("5 kW" over the zone) or a ``shell_temperature`` set-point (the power
+    is then an output)."""
+
+    start: Position
+    end: Position
+    power: Power | None = None
+    shell_temperature: Temperature | None = None
+
+
 class Heat(Section):
     """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md.
 
@@ -436,6 +450,7 @@ class Heat(Section):
     cells: Cells = 100
     closures: HeatClosures = HeatClosures()
     measurements: HeatMeasurements | None = None
+    heaters: list[HeaterZoneSection] = []
     axial_dispersion: (
         Literal["sherritt2003", "plug"]
         | Annotated[float, BeforeValidator(lambda v: _positive_number(v))]
@@ -489,6 +504,19 @@ def _nonnegative_number(v: Any) -> float:
     return float(v)
 
 
+def _reworded(exc: InputError) -> str:
+    """An InputError of a lower layer in the case's words: text values quoted, None empty."""
+    value, accepted = exc.value, exc.accepted
+    if not accepted:
+        return str(exc)
+    if isinstance(value, str) and value.startswith("fractions summing to "):
+        total, expected = value.removeprefix("fractions summing to "), accepted
+        return f"{exc.field}: the fractions sum to {total}, expected {expected.split(' ', 2)[-1]}"
+    if value is None:
+        return f"{exc.field}: empty, expected {accepted}"
+    return f"{exc.field}: {_show(value) if isinstance(value, str) else _short(value)} is not {accepted}"
+
+
 def _composition(phase: str):
     def check(v: Any) -> dict[str, float]:
         from rotarykiln.chemistry.species import check_mass_fractions
@@ -496,7 +524,7 @@ def _composition(phase: str):
         try:
             return check_mass_fractions("composition", v, phase=phase)
         except InputError as exc:
-            raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
+            raise PydanticCustomError("number", "{msg}", {"msg": _reworded(exc)}) from None
 
     return Annotated[dict[str, float], BeforeValidator(check)]
 
@@ -523,10 +551,10 @@ def _reaction_names(v: Any) -> list:
                 raise PydanticCustomError(
                     "number",
                     "{name} is not a built-in reaction ({known})",
-                    {"name": name, "known": ", ".join(sorted(known))},
+                    {"name": _show(name), "known": ", ".join(sorted(known))},
                 )
         if name in seen:
-            raise PydanticCustomError("number", "{name} is listed twice", {"name": name})
+            raise PydanticCustomError("number", "{name} is listed twice", {"name": _show(name)})
         seen.add(name)
     return v
 
@@ -584,6 +612,7 @@ class Chemistry(Section):
     gas: ChemistryGas = ChemistryGas()
     burner: Burner | None = None
     counter_current: bool = True
+    heaters: list[HeaterZoneSection] = []
     solid: ChemistrySolid = ChemistrySolid()
     residence_time: Time | None = None
     wall: Literal["wall_u", "lining"] | None = None
@@ -730,9 +759,9 @@ def _accepted(err: dict) -> str | None:
         return None
     ctx = dict(err.get("ctx") or {})
     if "expected" in ctx:  # "'instant' or 'burnout'" -> "instant, burnout"
-        ctx["expected"] = ", ".join(re.findall(r"'([^']*)'", str(ctx["expected"]))) or ctx[
-            "expected"
-        ]
+        ctx["expected"] = (
+            ", ".join(re.findall(r"'([^']*)'", str(ctx["expected"]))) or ctx["expected"]
+        )
     try:
         return template.format(**ctx)
     except (KeyError, IndexError):

@@ -145,6 +145,8 @@ class Kiln:
     ``bed_dispersion`` (m2/s): axial dispersion coefficient of the bed inside the balances
     (:mod:`rotarykiln.kiln.dispersion`; 0: plug flow; e.g. :math:`u L / Pe` with Pe from
     :mod:`rotarykiln.rtd.correlations`).
+    ``heaters``: electric heater zones on the shell
+    (:class:`~rotarykiln.kiln.wall.HeaterZone`: a power or a shell set-point; a lined wall only).
     """
 
     length: float
@@ -183,6 +185,7 @@ class Kiln:
     measurements: dict | None = None
     section: str = "chemistry"
     bed_dispersion: float = 0.0
+    heaters: tuple = ()
 
     def __post_init__(self):
         sec = self.section
@@ -218,6 +221,17 @@ class Kiln:
         check_positive(f"{sec}.wall_loss.ambient_temperature", self.ambient_temperature, "K")
         check_positive(f"{sec}.gas.pressure", self.pressure, "Pa")
         check_nonnegative(f"{sec}.bed_dispersion", self.bed_dispersion, "m2/s")
+        if self.heaters and not self.layers:
+            raise InputError(
+                f"{sec}.heaters", "given", "with a lining (the heaters sit on the shell)"
+            )
+        for zone in self.heaters:
+            if zone.end > self.length + 1e-9:
+                raise InputError(
+                    f"{sec}.heaters",
+                    f"{zone.end:.6g} m",
+                    f"<= the kiln length ({self.length:.6g} m)",
+                )
         if (
             self.heat_release == 0.0
             and not self.mechanism.reactions

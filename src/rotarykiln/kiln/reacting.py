@@ -22,7 +22,7 @@ from rotarykiln.errors import InputError
 from rotarykiln.kiln.model import SEED004_CLOSURES, Closures, Kiln
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_kiln
-from rotarykiln.kiln.wall import layers_from_case
+from rotarykiln.kiln.wall import HeaterZone, layers_from_case
 
 __all__ = [
     "mechanism_from_case",
@@ -155,6 +155,7 @@ def reacting_kiln_from_case(case) -> tuple[Kiln, int]:
         closures=closures,
         name=case.name,
         counter_current=ch.counter_current,
+        heaters=tuple(HeaterZone(z.start, z.end, z.power, z.shell_temperature) for z in ch.heaters),
         bed_depth=bed_depth,
         flame=flame,
         **wall,

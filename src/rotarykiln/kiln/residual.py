@@ -331,6 +331,8 @@ class KilnResidual:
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
         }
+        if self.kiln.heaters:
+            chemistry["q_electric_heating"] = self.wall.heating(tl)
         if self.depth is not None:
             chemistry["fill"] = geo.fill
             chemistry["bed_depth"] = geo.depth

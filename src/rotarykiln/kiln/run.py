@@ -20,7 +20,7 @@ from rotarykiln.kiln.model import Closures, Kiln
 from rotarykiln.kiln.run_files import write_solution_files
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_kiln
-from rotarykiln.kiln.wall import layers_from_case
+from rotarykiln.kiln.wall import HeaterZone, layers_from_case
 from rotarykiln.materials.solids import load_solid
 
 __all__ = [
@@ -130,6 +130,7 @@ def heat_kiln_from_case(case) -> tuple[Kiln, int]:
         ambient_temperature=h.ambient_temperature,
         wind_speed=h.wind_speed,
         closures=Closures.from_case(c),
+        heaters=tuple(HeaterZone(z.start, z.end, z.power, z.shell_temperature) for z in h.heaters),
         measurements=meas,
         name=case.name,
         **kw,

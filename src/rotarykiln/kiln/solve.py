@@ -154,6 +154,7 @@ def solve_kiln(
     hb = res.bed_enthalpy(tb_n)
     hg = res.mixture.species_enthalpy(tg_n)
     release = float(np.sum(res.grid.heat_release) * dz)
+    heating = float(np.sum(fl.get("q_electric_heating", 0.0)) * dz)
     gi, go = (-1, 0) if kiln.counter_current else (0, -1)  # gas inlet and outlet faces
     e_in = float(qb[0] @ hb[0] + qg[gi] @ hg[gi])
     e_out = float(qb[-1] @ hb[-1] + qg[go] @ hg[go])
@@ -165,7 +166,7 @@ def solve_kiln(
     reaction_heat = float(np.sum(fl["q_reaction_absorbed"] - (w_all * h_all).sum(-1)) * dz)
     heat_to_solids = float(qb[-1] @ hb[-1] - qb[0] @ hb[0])
     denom = max(abs(heat_to_solids), abs(reaction_heat), 1.0)
-    closure = (e_in + release - e_out - loss - reaction_heat) / denom
+    closure = (e_in + release + heating - e_out - loss - reaction_heat) / denom
     inlets = {s: float(qb[0, i]) for i, s in enumerate(res.bed_names)}
     inlets.update({s: float(qg[gi, i]) for i, s in enumerate(res.gas_names)})
     outlets = {s: float(max(qb[-1, i], 0.0)) for i, s in enumerate(res.bed_names)}
@@ -194,6 +195,7 @@ def solve_kiln(
         exhaust=float(qg[go] @ hg[go]),
         shell_loss=loss,
         release=release,
+        heating=heating,
     )
     return KilnSolution(
         name=kiln.name,
@@ -209,7 +211,7 @@ def solve_kiln(
         energy_closure=float(closure),
         element_closure={e: float(v) for e, v in elements.items()},
         residence_time=_residence_time(res, geo, qb),
-        fill=kiln.fill if res.depth is None else float(np.mean(geo.fill)),
+        fill=float(np.mean(geo.fill)),
         feed=dict(kiln.feed),
         counter_current=kiln.counter_current,
         heat_release=release,
@@ -231,7 +233,10 @@ def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterati
     k = res.kiln
     if any(r.heat < 0 for r in k.mechanism.reactions):
         return  # exothermic chemistry: the bound is an adiabatic temperature, not checked here
-    bound = max(k.gas_inlet_temperature, k.feed_temperature, k.ambient_temperature)
+    if any(z.power is not None for z in k.heaters):
+        return  # a heater of given power has no temperature bound
+    set_points = [z.shell_temperature for z in k.heaters]
+    bound = max(k.gas_inlet_temperature, k.feed_temperature, k.ambient_temperature, *set_points)
     bound = max(bound, _hot_temperature(res)) + 1.0
     for name, arr in (("T_bed", tb_n), ("T_gas", tg_n), ("T_wall", t_wall)):
         arr = np.asarray(arr)
@@ -246,7 +251,7 @@ def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterati
 
 
 def energy_sheet(
-    kiln, *, solids_in, to_solids, reaction_heat, gas_in, exhaust, shell_loss, release
+    kiln, *, solids_in, to_solids, reaction_heat, gas_in, exhaust, shell_loss, release, heating=0.0
 ) -> dict:
     """Energy balance sheet of a converged solve, W (and the thermal efficiency, -).
 
@@ -276,13 +281,14 @@ def energy_sheet(
         lhv = hhv = 0.0
         combustion, gas_sensible = float(release), float(gas_in)
     useful = to_solids + reaction_heat
-    supplied = lhv if lhv > 0 else gas_in - exhaust + release
-    total_in = solids_in + gas_sensible + combustion
+    supplied = lhv + heating if lhv > 0 else gas_in - exhaust + release + heating
+    total_in = solids_in + gas_sensible + combustion + heating
     total_out = solids_in + useful + shell_loss + exhaust
     return {
         "fuel_lhv_input_W": lhv,
         "fuel_hhv_input_W": hhv,
         "combustion_heat_W": combustion,
+        "electric_heating_W": float(heating),
         "sensible_input_gas_W": gas_sensible,
         "sensible_input_solids_W": float(solids_in),
         "heat_to_solids_sensible_W": float(to_solids),

@@ -25,7 +25,59 @@ from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
 from rotarykiln.materials.gas import GasPropertyTable, air_table
 from rotarykiln.materials.lining import Layer
 
-__all__ = ["LinedWall", "ConstantUWall", "layers_from_case"]
+__all__ = ["LinedWall", "ConstantUWall", "HeaterZone", "layers_from_case"]
+
+
+@dataclass(frozen=True)
+class HeaterZone:
+    """An electric heater zone on the shell, from ``start`` to ``end`` (m from the solids inlet).
+
+    Either ``power`` (W, delivered to the shell over the zone, uniformly per metre) or
+    ``shell_temperature`` (K, a set-point held by the heater; its power is an output).
+    """
+
+    start: float
+    end: float
+    power: float | None = None
+    shell_temperature: float | None = None
+
+    def __post_init__(self):
+        from rotarykiln.errors import InputError
+
+        if not (np.isfinite(self.start) and np.isfinite(self.end) and self.end > self.start >= 0):
+            raise InputError("heaters", (self.start, self.end), "a zone with 0 <= start < end")
+        if (self.power is None) == (self.shell_temperature is None):
+            raise InputError(
+                "heaters", self, "a zone with either a power or a shell_temperature set-point"
+            )
+        if self.power is not None and not (np.isfinite(self.power) and self.power >= 0):
+            raise InputError("heaters.power", self.power, ">= 0 W")
+        if self.shell_temperature is not None and not (
+            np.isfinite(self.shell_temperature) and self.shell_temperature > 0
+        ):
+            raise InputError("heaters.shell_temperature", self.shell_temperature, "> 0 K")
+
+
+def heater_arrays(zones, z_nodes):
+    """Per-cell heater power (W/m) and shell set-point (K, NaN where none) of ``zones``.
+
+    Examples
+    --------
+    >>> p, t = heater_arrays([HeaterZone(0.0, 1.0, power=1000.0)], np.linspace(0, 2, 5))
+    >>> p.tolist(), bool(np.isnan(t).all())
+    ([1000.0, 1000.0, 0.0, 0.0], True)
+    """
+    zn = np.asarray(z_nodes, dtype=float)
+    lo, hi = zn[:-1], zn[1:]
+    power = np.zeros(lo.size)
+    setpoint = np.full(lo.size, np.nan)
+    for zone in zones:
+        overlap = np.clip(np.minimum(hi, zone.end) - np.maximum(lo, zone.start), 0.0, None)
+        if zone.power is not None:
+            power += zone.power / (zone.end - zone.start) * overlap / (hi - lo)
+        else:
+            setpoint = np.where(overlap > 0.5 * (hi - lo), zone.shell_temperature, setpoint)
+    return power, setpoint
 
 
 def layers_from_case(lining, section: str = "heat") -> tuple[Layer, ...]:
@@ -87,14 +139,51 @@ class LinedWall:
     ambient_temperature: float
     wind_speed: float = 0.0
     air: GasPropertyTable = field(default_factory=air_table, repr=False)
+    heater_power: np.ndarray | None = None
+    heater_setpoint: np.ndarray | None = None
 
     @classmethod
     def of(cls, kiln, grid) -> LinedWall:
         """The wall of a kiln model with ``layers``, ``eps_shell``, ``ambient_temperature``,
-        ``wind_speed``, on ``grid`` (its lining radii)."""
+        ``wind_speed`` and ``heaters``, on ``grid`` (its lining radii and faces)."""
+        power = setpoint = None
+        if getattr(kiln, "heaters", ()):
+            power, setpoint = heater_arrays(kiln.heaters, grid.z_nodes)
         return cls(
-            kiln.layers, grid.radii, kiln.eps_shell, kiln.ambient_temperature, kiln.wind_speed
+            kiln.layers,
+            grid.radii,
+            kiln.eps_shell,
+            kiln.ambient_temperature,
+            kiln.wind_speed,
+            heater_power=power,
+            heater_setpoint=setpoint,
         )
+
+    def heating(self, t_wall):
+        """Electric heating of the shell (W/m per cell) at the wall temperatures ``t_wall``:
+        the given power, or in set-point cells the power that holds the shell at its
+        set-point (the shell's loss less what the lining takes in from it)."""
+        tl = np.asarray(t_wall, dtype=float)
+        if self.heater_power is None:
+            return np.zeros(tl.shape[:-1])
+        mat = self.layers[-1].material
+        q_last = cylinder_layer_heat_flow(
+            mat.conductivity_integral(tl[..., -2]),
+            mat.conductivity_integral(tl[..., -1]),
+            self.radii[-2],
+            self.radii[-1],
+            check=False,
+        )
+        q_loss = shell_heat_loss(
+            tl[..., -1],
+            self.ambient_temperature,
+            2.0 * self.radii[-1],
+            self.eps_shell,
+            self.air,
+            self.wind_speed,
+        )
+        held = ~np.isnan(self.heater_setpoint)
+        return np.where(held, q_loss - q_last, self.heater_power)
 
     @property
     def n_temperatures(self) -> int:
@@ -136,7 +225,18 @@ class LinedWall:
         rows = [q_in - q_layers[0]]
         for i in range(1, len(self.layers)):
             rows.append(q_layers[i - 1] - q_layers[i])
-        rows.append(q_layers[-1] - q_loss)
+        shell = q_layers[-1] - q_loss
+        if self.heater_power is not None:
+            held = ~np.isnan(self.heater_setpoint)
+            # set-point cells: the shell temperature is held (residual in W/m through a
+            # conductance of 2 pi r_shell 100 W/(m2 K)); other cells receive their power
+            g = 2.0 * np.pi * self.radii[-1] * 100.0
+            shell = np.where(
+                held,
+                g * (tl[..., -1] - np.nan_to_num(self.heater_setpoint)),
+                shell + self.heater_power,
+            )
+        rows.append(shell)
         return rows, q_loss
 
     def initial_guess(self, t_wall):
