@@ -629,6 +629,10 @@ class Chemistry(Section):
     cells: Cells = 100
     onset_width: Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))] = 0.0
     peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    axial_dispersion: (
+        Literal["sherritt2003", "plug"]
+        | Annotated[float, BeforeValidator(lambda v: _positive_number(v))]
+    ) = "plug"
     expected: dict[str, Any] = {}
 
 

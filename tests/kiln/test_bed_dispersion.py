@@ -56,3 +56,20 @@ def test_inert_bed_with_dispersion_closes():
     kiln = tscheng_kiln("A16")
     sol = solve_kiln(dataclasses.replace(kiln, bed_dispersion=1e-5))
     assert abs(sol.energy_closure) < 1e-6
+
+
+def test_case_key_of_the_reacting_kiln():
+    import yaml
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.kiln.reacting import run_reacting_case
+
+    d = yaml.safe_load(builtin_case_path("limestone_calcination").read_text())
+    kiln, _ = reacting_kiln_from_case(parse_case(d))
+    assert kiln.bed_dispersion == 0.0  # seed 004: plug flow by default
+    d["chemistry"]["axial_dispersion"] = 20
+    case = parse_case(d)
+    kiln, _ = reacting_kiln_from_case(case)
+    assert kiln.bed_dispersion == pytest.approx(kiln.bed_velocity * kiln.length / 20)
+    s = run_reacting_case(case).summary()
+    assert abs(s["energy_balance_closure"]) < 1e-6 and s["element_balance_closure"] < 1e-8

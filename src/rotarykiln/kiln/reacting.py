@@ -160,7 +160,24 @@ def reacting_kiln_from_case(case) -> tuple[Kiln, int]:
         flame=flame,
         **wall,
     )
-    return kiln, int(ch.cells)
+    dispersion = _bed_dispersion(ch.axial_dispersion, kiln)
+    return dataclasses.replace(kiln, bed_dispersion=dispersion), int(ch.cells)
+
+
+def _bed_dispersion(choice, kiln) -> float:
+    """Axial dispersion coefficient of the bed (m2/s) of ``chemistry.axial_dispersion``:
+    ``plug`` (default: seed 004's plug flow, the RTD as post-processing), ``sherritt2003``, or
+    a bed Peclet number u L / D."""
+    from rotarykiln.rtd.correlations import sherritt_dispersion
+
+    if choice == "plug":
+        return 0.0
+    if choice == "sherritt2003":
+        d = sherritt_dispersion(
+            kiln.omega, 2.0 * kiln.radius, kiln.particle_diameter, kiln.mean_fill
+        )
+        return float(d)
+    return kiln.bed_velocity * kiln.length / float(choice)
 
 
 def _kramers_bed(case, density):
