@@ -226,15 +226,18 @@ def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterati
     """Refuse a solution hotter than every heat source it has (ConvergenceError).
 
     Without exothermic reactions the hottest a kiln can be is its hottest inlet (gas, solids,
-    ambient) or the temperature its gas would reach with all the heat released in it; a face
-    above that by more than 1 K is a discretisation artefact (an under-resolved front), never
-    physics.
+    ambient, a heater set-point); a face above that by more than 1 K is a discretisation
+    artefact (an under-resolved front), never physics. Not checked with exothermic chemistry,
+    heat released along a flame or heaters of given power.
     """
     k = res.kiln
     if any(r.heat < 0 for r in k.mechanism.reactions):
         return  # exothermic chemistry: the bound is an adiabatic temperature, not checked here
     if any(z.power is not None for z in k.heaters):
         return  # a heater of given power has no temperature bound
+    if k.heat_release > 0:
+        return  # heat released inside: a counter-current kiln recuperates heat into the
+        # unburnt gas (super-adiabatic temperatures are physical there), no simple bound
     set_points = [z.shell_temperature for z in k.heaters]
     bound = max(k.gas_inlet_temperature, k.feed_temperature, k.ambient_temperature, *set_points)
     bound = max(bound, _hot_temperature(res)) + 1.0
