@@ -108,3 +108,15 @@ def test_co_current_variant_converges():
         sol = run_heat_case(parse_case(data))
         assert abs(sol.energy_closure) < 1e-6
         assert sol.t_gas_nodes[0] == pytest.approx(sol.burner["adiabatic_temperature_K"])
+
+
+@pytest.mark.parametrize("counter_current", [True, False])
+def test_mixing_limited_burnout_option_converges_and_closes(counter_current):
+    data = yaml.safe_load(builtin_case_path("heat/barr_T4").read_text())
+    data["heat"]["burner"].update(combustion="burnout", nozzle_diameter="40 mm")
+    data["heat"]["counter_current"] = counter_current
+    sol = run_heat_case(parse_case(data))
+    s = sol.energy_sheet
+    assert abs(sol.energy_closure) < 1e-6 and abs(s["closure_relative"]) < 1e-6
+    assert s["combustion_heat_W"] == pytest.approx(s["fuel_lhv_input_W"], rel=2e-3)
+    assert 0.3 < sol.burner["flame_length_m"] < 1.0  # Hawthorne-Weddell-Hottel, 40 mm nozzle
