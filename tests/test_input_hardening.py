@@ -200,9 +200,21 @@ def test_the_usual_spellings_still_read(text, kind, si):
 SMALL = {"kiln": {"length": "2 m", "diameter": "0.4 m"}, "operation": {"speed": "1 rpm"}}
 
 
-@pytest.mark.parametrize("n", [0, 1, 100_001, 10**7, 1e7, 2.5, "many", None])
-def test_transport_n_points_is_bounded(n):
-    with refused_quickly(f"transport.n_points: {n} is not an integer in [2, 100000]"):
+@pytest.mark.parametrize(
+    ("n", "shown"),
+    [
+        (0, "0 is not"),
+        (1, "1 is not"),
+        (100_001, "100001 is not"),
+        (10**7, "10000000 is not"),
+        (1e7, "10000000.0 is not"),
+        (2.5, "2.5 is not"),
+        ("many", '"many" is not'),
+        (None, "empty, expected"),
+    ],
+)
+def test_transport_n_points_is_bounded(n, shown):
+    with refused_quickly(f"transport.n_points: {shown} an integer in [2, 100000]"):
         parse_case({**SMALL, "transport": {"n_points": n}})
 
 
@@ -235,3 +247,101 @@ def test_bed_points_are_bounded(points, capsys):
     err = capsys.readouterr().err.strip()
     assert err.endswith(f"--points: {points} is not an integer in [2, 100000]")
     assert "\n" not in err
+
+
+# --- messages in English ---------------------------------------------------------------------
+
+HEAT_CASE = "heat/tscheng_A16"
+FLAME_CASE = "heat/ubc_pilot_flame"
+PYDANTIC_TEXT = ("Input should", "None", "Field required", "Value error", "function-", "str.")
+
+
+def mutated(case: str, path: str, value="DELETE"):
+    data = yaml.safe_load(Path(builtin_case_path(case)).read_text(encoding="utf-8"))
+    *parents, last = [int(k) if k.isdigit() else k for k in path.split(".")]
+    node = data
+    for key in parents:
+        node = node[key]
+    if value == "DELETE":
+        del node[last]
+    else:
+        node[last] = value
+    return data
+
+
+@pytest.mark.parametrize(
+    ("case", "path", "value", "message"),
+    [
+        (HEAT_CASE, "kiln.length", "DELETE", "kiln.length: missing (required)"),
+        (HEAT_CASE, "kiln.length", None, "kiln.length: empty, expected a length (m, cm, mm)"),
+        (HEAT_CASE, "kiln", [1, 2], "kiln: [1, 2] is not a mapping of keys"),
+        (HEAT_CASE, "name", 12, "name: 12 is not a text (in quotes if it looks like a number)"),
+        (HEAT_CASE, "heat.lining", {"a": 1}, "heat.lining: {'a': 1} is not a list"),
+        (FLAME_CASE, "heat.closures.radiation", 1.5, "heat.closures.radiation: 1.5 is not true"),
+        (
+            FLAME_CASE,
+            "heat.closures.gas_emissivity",
+            [1],
+            "heat.closures.gas_emissivity: [1] is not a text (in quotes if it looks like a "
+            "number) or a number",
+        ),
+        (
+            HEAT_CASE,
+            "heat.lining.2.absent.0",
+            [1, 2, 3],
+            "heat.lining.2.absent.0: [1, 2, 3] is not a list of at most 2 items",
+        ),
+        (HEAT_CASE, "heat.solid", None, "heat.solid: empty, expected one of charcoal, lime,"),
+        (
+            HEAT_CASE,
+            "heat.measurements.z_gas",
+            "abc",
+            'heat.measurements.z_gas: "abc" is not a list',
+        ),
+        (
+            "limestone_calcination",
+            "chemistry.feed.composition.CaCO3",
+            "abc",
+            'chemistry.feed.composition.CaCO3: "abc" is not a number in [0, 1]',
+        ),
+        (
+            "limestone_calcination",
+            "chemistry.feed.composition.CaCO3",
+            None,
+            "chemistry.feed.composition.CaCO3: empty, expected a number in [0, 1]",
+        ),
+        (
+            "limestone_calcination",
+            "chemistry.gas_gain_per_carbon",
+            "both",
+            'chemistry.gas_gain_per_carbon: "both" is not one of corrected, faithful',
+        ),
+        (
+            "limestone_calcination",
+            "chemistry.onset_width",
+            "",
+            'chemistry.onset_width: "" is not a number >= 0',
+        ),
+    ],
+)
+def test_messages_name_the_field_the_value_and_what_is_accepted(case, path, value, message):
+    with refused_quickly(message) as info:
+        parse_case(mutated(case, path, value))
+    assert not any(text in str(info.value) for text in PYDANTIC_TEXT)
+
+
+def test_transport_messages_are_english():
+    with refused_quickly('transport.friction: "wet" is not zero, dynamic, static or a number'):
+        parse_case({**SMALL, "transport": {"model": "scott", "friction": "wet"}})
+    with refused_quickly('transport.model: "x" is not one of kramers, scott'):
+        parse_case({**SMALL, "transport": {"model": "x"}})
+
+
+def test_missing_values_of_lower_layers_read_missing_required():
+    assert str(InputError("rtd", "missing", "an rtd: section in the case")) == (
+        "rtd: missing (required: an rtd: section in the case)"
+    )
+    assert str(InputError("x.value", "missing", "given")) == "x.value: missing (required)"
+    assert str(InputError("heat", None, "present (the case has no heat: section)")) == (
+        "heat: missing (required: the case has no heat: section)"
+    )

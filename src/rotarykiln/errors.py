@@ -43,6 +43,12 @@ class InputError(ValueError):
         self.field = field
         self.value = value
         self.accepted = accepted
+        if (
+            not message
+            and (value is None or (isinstance(value, str) and value == "missing"))
+            and accepted
+        ):
+            message = f"{field}: {_missing(accepted)}"  # not "x: missing is not given"
         if not message:
             message = (
                 f"{field}: {_fmt(value)} is not {accepted}" if accepted else f"{field}: {value}"
@@ -71,6 +77,18 @@ class ConvergenceError(RuntimeError):
 
 class OutOfRangeWarning(UserWarning):
     """A model or correlation is used outside the range its source validated."""
+
+
+def _missing(accepted: str) -> str:
+    """The message "missing (required ...)" for a value not given, from what was accepted."""
+    word, _, rest = accepted.partition(" ")
+    if word not in ("given", "present"):
+        return f"missing (required: {accepted})"
+    if not rest:
+        return "missing (required)"
+    if rest.startswith("(") and rest.endswith(")") and rest.count("(") == 1:
+        return f"missing (required: {rest[1:-1]})"
+    return f"missing (required {rest})"
 
 
 def _fmt(value: Any) -> str:

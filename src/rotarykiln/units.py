@@ -338,6 +338,8 @@ def to_si(field: str, value: str | float | int, kind: str) -> float:
                 message=f'{field}: bare number {value} needs a unit (e.g. "{value} {UNIT_REQUIRED[kind]}")',
             )
         return float(value)
+    if value is None:
+        raise InputError(field, message=f"{field}: empty, {_expected(kind)}")
     if not isinstance(value, str):
         raise InputError(field, message=f"{field}: {value!r} is not a quantity with a unit")
     q = _parse(field, value, kind)

@@ -48,22 +48,22 @@ def _bad(data, path, value):
         (
             ["chemistry", "feed", "composition"],
             {"H2O(l)": -0.1, "CaCO3": 0.9},
-            "chemistry.feed.composition: composition.H2O(l): -0.1 is not a mass fraction",
+            "chemistry.feed.composition.H2O(l): -0.1 is not a mass fraction",
         ),
         (
             ["chemistry", "feed", "composition"],
             {"H2O(l)": 0.2, "CaCO3": 0.9},
-            "fractions summing to 1.1 is not summing to 1",
+            "chemistry.feed.composition: the fractions sum to 1.1, expected 1",
         ),
         (
             ["chemistry", "feed", "composition"],
             {"H2O(l)": 0.1, "CaCO4": 0.9},
-            "CaCO4 is not a known species",
+            '"CaCO4" is not a known species',
         ),
         (
             ["chemistry", "gas", "composition"],
             {"N2": 0.7, "CO2": 0.3, "unobtainium": 0.0},
-            "unobtainium is not a known species",
+            '"unobtainium" is not a known species',
         ),
         (
             ["chemistry", "reactions"],

@@ -69,7 +69,7 @@ def register(sub) -> None:
 
 def run(args) -> int:
     if not args.param:
-        raise InputError("--param", "none", "at least one PATH=DIST(ARGS)")
+        raise InputError("--param", message="--param: missing (at least one PATH=DIST(ARGS))")
     params = as_params(args.param)
     base = _load_case(args.case)
     func = _load_model(args.model)
@@ -78,7 +78,9 @@ def run(args) -> int:
     if args.method == "uncertainty":
         return _uncertainty(args, func, base, params, folder, opts)
     if not args.output:
-        raise InputError("--output", "none", f"given with --method {args.method}")
+        raise InputError(
+            "--output", message=f"--output: missing (required with --method {args.method})"
+        )
     if args.method == "sobol":
         res = sobol_indices(func, base, params, args.output, args.n, seed=args.seed, **opts)
     else:

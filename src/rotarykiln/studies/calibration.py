@@ -619,7 +619,7 @@ def calibrate_cases(
 def _fit_params(params) -> list[FitParam]:
     fit = [p if isinstance(p, FitParam) else parse_fit(p) for p in params]
     if not fit:
-        raise InputError("--fit", "none", "at least one PATH=START")
+        raise InputError("--fit", message="--fit: missing (at least one PATH=START)")
     paths = [p.path for p in fit]
     if len(set(paths)) != len(paths):
         raise InputError("--fit", paths, "each path once")
