@@ -1,0 +1,133 @@
+"""Seeded fuzz of the case files (issue 15): every mutated built-in case is either a valid case or
+refused with one InputError line, never another exception; the refusal is fast and in words.
+
+Budget: a fixed seed, a few hundred mutations (about 5 s). A longer campaign (18,972 mutations,
+0 tracebacks, 0 raw pydantic texts) is described in docs/validation.md."""
+
+from __future__ import annotations
+
+import copy
+import random
+import re
+import time
+
+import pytest
+import yaml
+
+from rotarykiln.case import parse_case
+from rotarykiln.cases import builtin_case_path, list_builtin_cases
+from rotarykiln.errors import ConvergenceError, InputError
+
+VALUES = [
+    None,
+    1,
+    -1,
+    0,
+    1.5,
+    True,
+    "abc",
+    "",
+    [1, 2],
+    [],
+    {"a": 1},
+    {},
+    "1 m",
+    float("nan"),
+    1e308,
+    1e-308,
+    "-3 K",
+    "9**9**9 m",
+    "m",
+    "1e400 kg/h",
+    "0 rpm",
+    "C2H8:1",
+    "N2:nan",
+]
+RAW = re.compile(r"Input should|None is not|is not an? rtd|given is not|Value error|\[type=")
+
+
+def _paths(x, p=()):
+    if isinstance(x, dict):
+        for k, v in x.items():
+            yield p + (k,)
+            yield from _paths(v, p + (k,))
+    elif isinstance(x, list):
+        for i, v in enumerate(x):
+            yield p + (i,)
+            yield from _paths(v, p + (i,))
+
+
+def _set(d, p, v):
+    for k in p[:-1]:
+        d = d[k]
+    if v == "DELETE":
+        if isinstance(d, dict):
+            del d[p[-1]]
+        else:
+            d.pop(p[-1])
+    else:
+        d[p[-1]] = v
+
+
+def _mutations(n, seed):
+    rng = random.Random(seed)
+    names = list_builtin_cases()
+    for _ in range(n):
+        name = rng.choice(names)
+        base = yaml.safe_load(builtin_case_path(name).read_text())
+        d = copy.deepcopy(base)
+        p = rng.choice(list(_paths(base)))
+        _set(d, p, rng.choice(VALUES + ["DELETE"]))
+        yield name, p, d
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_mutated_cases_are_valid_or_refused_in_one_line(seed):
+    for name, path, data in _mutations(200, seed):
+        t = time.perf_counter()
+        try:
+            parse_case(data)
+        except InputError as exc:
+            msg = str(exc)
+            assert "\n" not in msg, (name, path, msg)
+            assert not RAW.search(msg), (name, path, msg)
+        assert time.perf_counter() - t < 2.0, (name, path)
+
+
+def test_random_operating_points_converge_or_fail_cleanly():
+    # operating points around the fired and air-heated built-in kilns: speed, feed and firing
+    # within a factor 0.6-1.6 of the nominal; each converges (closed balances) or raises
+    # ConvergenceError, never anything else, never an unphysical solution
+    from rotarykiln.kiln.reacting import run_reacting_case
+    from rotarykiln.kiln.run import run_heat_case
+
+    rng = random.Random(7)
+
+    def scale(text, f):
+        number, unit = text.split(" ", 1)
+        return f"{float(number) * f:.6g} {unit}"
+
+    ok = 0
+    for i in range(12):
+        name = ("heat/barr_T4", "heat/tscheng_A16", "limestone_fired")[i % 3]
+        d = yaml.safe_load(builtin_case_path(name).read_text())
+        d["operation"]["feed"] = scale(d["operation"]["feed"], rng.uniform(0.6, 1.6))
+        d["operation"]["speed"] = scale(d["operation"]["speed"], rng.uniform(0.6, 1.6))
+        if name == "heat/barr_T4":
+            b = d["heat"]["burner"]
+            b["fuel_flow"] = scale(b["fuel_flow"], rng.uniform(0.7, 1.3))
+        elif name == "heat/tscheng_A16":
+            d["heat"]["gas"]["flow"] = scale(d["heat"]["gas"]["flow"], rng.uniform(0.6, 1.6))
+        else:
+            b = d["chemistry"]["burner"]
+            b["fuel_flow"] = scale(b["fuel_flow"], rng.uniform(0.8, 1.3))
+        case = parse_case(d)
+        try:
+            sol = run_heat_case(case) if "heat" in d else run_reacting_case(case)
+        except ConvergenceError:
+            continue
+        assert abs(sol.energy_closure) < 1e-6
+        ok += 1
+    # all converge today (125 of 125 in a longer seeded run); one of these 12 stalled at 1.16x
+    # the tolerance before Newton accepted round-off stagnation (kiln/newton.py)
+    assert ok == 12
