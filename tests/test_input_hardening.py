@@ -345,3 +345,23 @@ def test_missing_values_of_lower_layers_read_missing_required():
     assert str(InputError("heat", None, "present (the case has no heat: section)")) == (
         "heat: missing (required: the case has no heat: section)"
     )
+
+
+def test_measurement_lists_of_unequal_length_refused_at_load():
+    import yaml
+
+    from rotarykiln.cases import builtin_case_path
+
+    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data["heat"]["measurements"]["t_bed"] = data["heat"]["measurements"]["t_bed"][:-1]
+    with pytest.raises(InputError, match="z_bed has 5 positions but t_bed 4 temperatures"):
+        parse_case(data)
+
+
+@pytest.mark.parametrize("angle", ["200 deg", "0 deg"])
+def test_half_angle_out_of_range_says_degrees(angle, capsys):
+    from rotarykiln import cli
+
+    assert cli.main(["geometry", "--diameter", "0.4", "m", "--half-angle", *angle.split()]) == 2
+    err = capsys.readouterr().err
+    assert f"--half-angle: {angle} is not in (0, 180) deg" in err

@@ -417,6 +417,19 @@ class HeatMeasurements(Section):
     t_gas_wall: list[Temperature] = []
     wall_interface: int = 0
 
+    @model_validator(mode="after")
+    def _pairs(self):
+        for key in ("gas", "bed", "wall", "gas_wall"):
+            z, t = getattr(self, f"z_{key}"), getattr(self, f"t_{key}")
+            if len(z) != len(t):
+                raise PydanticCustomError(
+                    "number",
+                    "z_{key} has {nz} positions but t_{key} {nt} temperatures: give one "
+                    "temperature per position",
+                    {"key": key, "nz": len(z), "nt": len(t)},
+                )
+        return self
+
 
 class HeaterZoneSection(Section):
     """An electric heater zone on the shell: from ``start`` to ``end`` (m from the solids inlet)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 
 from rotarykiln.commands._args import add_quantity, get_quantity, print_json
 from rotarykiln.errors import InputError
@@ -63,6 +64,11 @@ def run(args: argparse.Namespace) -> int:
             )
         cs = CrossSection.from_depth(value, radius)
     elif key == "half-angle":
+        if not 0 < value < math.pi:
+            raise InputError(
+                "--half-angle",
+                message=f"--half-angle: {' '.join(args.half_angle)} is not in (0, 180) deg",
+            )
         cs = CrossSection.from_half_angle(value, radius)
     else:
         cs = CrossSection.from_chord(value, radius)
