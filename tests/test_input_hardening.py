@@ -365,3 +365,20 @@ def test_half_angle_out_of_range_says_degrees(angle, capsys):
     assert cli.main(["geometry", "--diameter", "0.4", "m", "--half-angle", *angle.split()]) == 2
     err = capsys.readouterr().err
     assert f"--half-angle: {angle} is not in (0, 180) deg" in err
+
+
+def test_out_folder_checked_writable_before_solving(tmp_path, monkeypatch, capsys):
+    import tempfile
+
+    from rotarykiln import cli
+
+    def refuse(*args, **kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(tempfile, "NamedTemporaryFile", refuse)
+    code = cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path / "out")])
+    err = capsys.readouterr().err
+    assert code == 2 and "--out: cannot write in" in err and "Traceback" not in err
+    assert not any((tmp_path / "out").iterdir())  # nothing solved, nothing written
+    long = tmp_path / ("x" * 300)
+    assert cli.main(["run", "heat/tscheng_A16", "--out", str(long)]) == 2

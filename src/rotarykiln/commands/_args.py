@@ -34,15 +34,25 @@ def print_json(data) -> None:
 
 
 def out_dir(path: str | None, default: str) -> Path:
-    """The output folder (created)."""
+    """The output folder (created, and checked to be writable before any model runs)."""
     p = Path(path or default)
-    if p.exists() and not p.is_dir():
-        raise InputError("--out", str(p), message=f"--out: {p} is a file, not a folder")
     try:
+        if p.exists() and not p.is_dir():
+            raise InputError("--out", str(p), message=f"--out: {p} is a file, not a folder")
         p.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise InputError(
             "--out", str(p), message=f"--out: cannot create {p} ({exc.strerror})"
+        ) from None
+    # check now, not after a long solve, that files can be written there
+    import tempfile
+
+    try:
+        with tempfile.NamedTemporaryFile(dir=p, prefix=".rk-write-check-"):
+            pass
+    except OSError as exc:
+        raise InputError(
+            "--out", str(p), message=f"--out: cannot write in {p} ({exc.strerror})"
         ) from None
     return p
 
