@@ -29,3 +29,28 @@ def test_failed_write_keeps_previous_file(tmp_path):
         write_frame_atomic(target, Boom({"a": [1]}))
     assert target.read_text() == "old"
     assert [p.name for p in tmp_path.iterdir()] == ["keep.csv"]
+
+
+def test_no_plots_writes_no_figure(tmp_path):
+    from rotarykiln import cli
+
+    assert cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
+    names = {p.name for p in tmp_path.iterdir()}
+    assert "heat_profiles.csv" in names and "summary.json" in names
+    assert not any(n.endswith((".png", ".svg", ".pdf")) for n in names)
+
+
+def test_a_failing_figure_keeps_the_tables(tmp_path, monkeypatch, capsys):
+    import matplotlib.figure
+
+    from rotarykiln import cli
+
+    def broken(self, *args, **kwargs):
+        raise RuntimeError("renderer exploded")
+
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", broken)
+    assert cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path)]) == 0
+    assert "figure heat_profiles.png not written: renderer exploded" in capsys.readouterr().err
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"heat_profiles.csv", "heat_summary.json", "summary.json"} <= names
+    assert not any(n.endswith(".png") for n in names)

@@ -6,9 +6,12 @@ target, so an interrupted run never leaves a truncated result behind.
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import json
 import os
 import tempfile
+import warnings
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -84,8 +87,28 @@ def write_frame_atomic(path: str | os.PathLike, frame: pd.DataFrame, **to_csv_kw
     return atomic_path(path, lambda p: frame.to_csv(p, **to_csv_kwargs))
 
 
-def save_figure_atomic(path: str | os.PathLike, fig, **savefig_kwargs) -> Path:
-    """Save a matplotlib figure atomically; the format follows the suffix of ``path``."""
+#: False inside :func:`no_figures`: :func:`save_figure_atomic` then writes nothing.
+_FIGURES = contextvars.ContextVar("rotarykiln_figures", default=True)
+
+
+@contextlib.contextmanager
+def no_figures():
+    """Within this context :func:`save_figure_atomic` writes no figure (``--no-plots``)."""
+    token = _FIGURES.set(False)
+    try:
+        yield
+    finally:
+        _FIGURES.reset(token)
+
+
+def save_figure_atomic(path: str | os.PathLike, fig, **savefig_kwargs) -> Path | None:
+    """Save a matplotlib figure atomically; the format follows the suffix of ``path``.
+
+    Inside :func:`no_figures` nothing is written (returns None). A figure that fails to render
+    is reported as a warning and skipped: the tables written before it are kept.
+    """
+    if not _FIGURES.get():
+        return None
     savefig_kwargs.setdefault("dpi", 120)
     savefig_kwargs.setdefault("bbox_inches", "tight")
     fmt = Path(path).suffix.lstrip(".").lower() or "png"
@@ -95,4 +118,10 @@ def save_figure_atomic(path: str | os.PathLike, fig, **savefig_kwargs) -> Path:
             str(path),
             message=f'{path}: ".{fmt}" is not a figure format (use .png, .pdf or .svg)',
         )
-    return atomic_path(path, lambda p: fig.savefig(p, format=fmt, **savefig_kwargs))
+    try:
+        return atomic_path(path, lambda p: fig.savefig(p, format=fmt, **savefig_kwargs))
+    except (OSError, InputError):
+        raise
+    except Exception as exc:  # a rendering failure must not lose the run's tables
+        warnings.warn(f"figure {Path(path).name} not written: {exc}", RuntimeWarning, stacklevel=2)
+        return None

@@ -16,7 +16,7 @@ from pathlib import Path
 from rotarykiln.case import load_case
 from rotarykiln.commands._args import out_dir, print_json
 from rotarykiln.errors import InputError
-from rotarykiln.outputs import save_figure_atomic, write_json_atomic, write_text_atomic
+from rotarykiln.outputs import no_figures, save_figure_atomic, write_json_atomic, write_text_atomic
 from rotarykiln.report import case_summary, format_table
 
 RUNNERS: dict[str, str] = {
@@ -59,7 +59,8 @@ def run_case(
     """
     before = _stamps(out) if report else {}
     recorder = warnings.catch_warnings(record=True) if report else contextlib.nullcontext([])
-    with recorder as caught:
+    figures = contextlib.nullcontext() if plots else no_figures()
+    with recorder as caught, figures:
         summary = case_summary(case)
         sections = {"case": dict(summary)}
         for section, target in RUNNERS.items():
