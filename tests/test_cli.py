@@ -114,11 +114,11 @@ def test_console_entry_point_usage_error_exit_code():
 @pytest.mark.parametrize(
     ("line", "message"),
     [
-        ("kiln: {length: 5 m, diameter: -0.4 m}", "kiln.diameter: -0.4 m is not > 0"),
+        ("kiln: {length: 5 m, diameter: -0.4 m}", "kiln.diameter: -0.4 m is not in [1 um, 10 km]"),
         ("kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: 3 m}", '"3 m" is a length'),
         (
             "kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: -2 rpm}",
-            "speed: -2 rpm is not > 0",
+            "speed: -2 rpm is not in [1e-5 rpm, 955 rpm]",
         ),
         ("kiln: {length: 5 m, diameter: 0.4 m}\nbed: {fill: 1}", "bed.fill: 1 is not in (0, 1)"),
     ],

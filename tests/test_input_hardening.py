@@ -1,5 +1,6 @@
 """Hostile inputs (issue 15, "Inputs"): each is refused quickly with one InputError line."""
 
+import re
 import time
 from contextlib import contextmanager
 from pathlib import Path
@@ -382,3 +383,29 @@ def test_out_folder_checked_writable_before_solving(tmp_path, monkeypatch, capsy
     assert not any((tmp_path / "out").iterdir())  # nothing solved, nothing written
     long = tmp_path / ("x" * 300)
     assert cli.main(["run", "heat/tscheng_A16", "--out", str(long)]) == 2
+
+
+@pytest.mark.parametrize(
+    ("path", "value", "field"),
+    [
+        (("kiln", "length"), "1e-308 m", "kiln.length"),
+        (("kiln", "length"), "1e300 m", "kiln.length"),
+        (("operation", "feed"), "1e300 kg/h", "operation.feed"),
+        (("operation", "speed"), "1e-308 rpm", "operation.speed"),
+        (("heat", "gas", "inlet_temperature"), "1e-308 K", "heat.gas.inlet_temperature"),
+        (("heat", "gas", "inlet_temperature"), "1e300 K", "heat.gas.inlet_temperature"),
+        (("material", "bulk_density"), "1e300 kg/m3", "material.bulk_density"),
+    ],
+)
+def test_extreme_values_never_reach_a_solver(path, value, field):
+    import yaml
+
+    from rotarykiln.cases import builtin_case_path
+
+    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    node = data
+    for key in path[:-1]:
+        node = node[key]
+    node[path[-1]] = value
+    with pytest.raises(InputError, match=re.escape(field) + r".* is not in \["):
+        parse_case(data)

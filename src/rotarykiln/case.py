@@ -141,22 +141,30 @@ def quantity(
     return Annotated[float, BeforeValidator(convert)]
 
 
-Length = quantity("length", gt=0)
-Position = quantity("length", ge=0)
+# Physical ranges (issue 15): wide enough for any real kiln or lab drum, narrow enough that no
+# 1e-308 or 1e300 reaches a solver. The message shows the range in the unit most people type.
+Length = quantity("length", ge=1e-6, le=1e4, shown="in [1 um, 10 km]")
+Position = quantity("length", ge=0, le=1e4, shown="in [0, 10 km]")
 Angle = quantity("angle", ge=-math.pi / 2, le=math.pi / 2, shown="in [-90, 90] deg")
-RotationRate = quantity("rotation rate", gt=0)
-MassFlow = quantity("mass flow", ge=0)
-VolumetricFlow = quantity("volumetric flow", ge=0)
-Temperature = quantity("temperature", gt=0, shown="> 0 K")
-Density = quantity("density", gt=0)
-Time = quantity("time", gt=0)
-Velocity = quantity("velocity", ge=0)
+RotationRate = quantity(
+    "rotation rate", ge=1e-6, le=100.0, shown="in [1e-5 rpm, 955 rpm] (1e-6 to 100 rad/s)"
+)
+MassFlow = quantity("mass flow", ge=0, le=1e5, shown="in [0, 1e5 kg/s]")
+VolumetricFlow = quantity("volumetric flow", ge=0, le=1e4, shown="in [0, 1e4 m3/s]")
+Temperature = quantity("temperature", ge=1.0, le=1e4, shown="in [1 K, 10000 K]")
+Density = quantity("density", ge=1e-3, le=1e5, shown="in [0.001, 1e5] kg/m3")
+Time = quantity("time", ge=1e-6, le=1e10, shown="in [1 us, 1e10 s]")
+Velocity = quantity("velocity", ge=0, le=1e3, shown="in [0, 1000] m/s")
 Fraction = quantity("fraction", ge=0, le=1)
-Power = quantity("power")
-Pressure = quantity("pressure", gt=0)
-ThermalConductivity = quantity("thermal conductivity", gt=0)
-SpecificHeat = quantity("specific heat", gt=0)
-HeatTransferCoefficient = quantity("heat transfer coefficient", ge=0)
+Power = quantity("power", ge=-1e10, le=1e10, shown="in [-1e10, 1e10] W")
+Pressure = quantity("pressure", ge=1.0, le=1e8, shown="in [1 Pa, 1000 bar]")
+ThermalConductivity = quantity(
+    "thermal conductivity", ge=1e-5, le=1e4, shown="in [1e-5, 1e4] W/(m K)"
+)
+SpecificHeat = quantity("specific heat", ge=1.0, le=1e6, shown="in [1, 1e6] J/(kg K)")
+HeatTransferCoefficient = quantity(
+    "heat transfer coefficient", ge=0, le=1e6, shown="in [0, 1e6] W/(m2 K)"
+)
 
 Slope = quantity("angle", ge=0, lt=math.radians(45), shown="in [0, 45) deg")
 ReposeAngle = quantity("angle", gt=0, lt=math.radians(90), shown="in (0, 90) deg")
