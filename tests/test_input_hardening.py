@@ -409,3 +409,14 @@ def test_extreme_values_never_reach_a_solver(path, value, field):
     node[path[-1]] = value
     with pytest.raises(InputError, match=re.escape(field) + r".* is not in \["):
         parse_case(data)
+
+
+@pytest.mark.parametrize("name", ["../../escape", "/tmp/x", "a/b", ".hidden"])
+def test_sweep_name_cannot_write_outside_out(name, tmp_path, capsys):
+    from rotarykiln import cli
+
+    argv = ["sweep", "--case", "heat/tscheng_A16", "--model", "heat"]
+    argv += ["--grid", "operation.speed=1 rpm,2 rpm", "--out", str(tmp_path), "--name", name]
+    assert cli.main(argv) == 2
+    assert "--name" in capsys.readouterr().err
+    assert not any(tmp_path.iterdir())

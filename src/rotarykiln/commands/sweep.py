@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import re
 import sys
 from pathlib import Path
 
@@ -196,6 +197,12 @@ def run(args) -> int:
         raise InputError(f"--{kind}", getattr(args, kind), "given with --param PATH=DIST(ARGS)")
     if kind not in SAMPLED and args.param:
         raise InputError("--param", args.param[0], "used with --lhs, --sobol or --mc")
+    if not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,80}", args.name) or ".." in args.name:
+        raise InputError(
+            "--name",
+            args.name,
+            "a plain file name (letters, digits, '_', '-', '.'; no folder): the files go in --out",
+        )
     base = _load_case(args.case)
     func = _load_model(args.model)
     if kind == "grid":
