@@ -54,3 +54,16 @@ def test_a_failing_figure_keeps_the_tables(tmp_path, monkeypatch, capsys):
     names = {p.name for p in tmp_path.iterdir()}
     assert {"heat_profiles.csv", "heat_summary.json", "summary.json"} <= names
     assert not any(n.endswith(".png") for n in names)
+
+
+def test_a_second_run_into_the_same_folder_leaves_no_file_of_the_first(tmp_path):
+    from rotarykiln import cli
+
+    mine = tmp_path / "notes.txt"  # a user's own file in the folder is never touched
+    mine.write_text("keep me")
+    assert cli.main(["run", "limestone_fired", "--out", str(tmp_path), "--no-plots"]) == 0
+    assert (tmp_path / "reacting_profiles.csv").is_file()
+    assert cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
+    names = {p.name for p in tmp_path.iterdir()}
+    assert "heat_profiles.csv" in names and "reacting_profiles.csv" not in names
+    assert mine.read_text() == "keep me"

@@ -126,10 +126,36 @@ def case_path(spec: str) -> Path:
     )
 
 
+MANIFEST = "run_files.json"  # the files of the last run in this folder
+
+
+def _previous_outputs(out: Path) -> list[str]:
+    """Files an earlier ``run`` wrote into ``out`` (its manifest), [] if none or unreadable."""
+    import json
+
+    try:
+        names = json.loads((out / MANIFEST).read_text()).get("files", [])
+    except (OSError, ValueError, AttributeError):
+        return []
+    return [n for n in names if isinstance(n, str) and "/" not in n and not n.startswith(".")]
+
+
+def _replace_outputs(out: Path, before: dict, previous: list[str]) -> None:
+    """Record what this run wrote and remove what an earlier run left that this one did not
+    rewrite (only files named in the earlier run's manifest: nothing else is touched)."""
+    written = sorted(p.name for p, t in _stamps(out).items() if before.get(p) != t)
+    for name in previous:
+        if name not in written:
+            (out / name).unlink(missing_ok=True)
+    write_json_atomic(out / MANIFEST, {"files": written})
+
+
 def run(args: argparse.Namespace) -> int:
     case = load_case(case_path(args.case))
     out = out_dir(args.out, f"{Path(args.case).stem}-results")
+    previous, before = _previous_outputs(out), _stamps(out)
     summary = run_case(case, out, plots=not args.no_plots, report=args.report, source=args.case)
+    _replace_outputs(out, before, previous)
     if args.json:
         print_json(summary)
     else:
