@@ -10,7 +10,7 @@ _MEASURED = (
     ("gas", "tab:red", "o"),
     ("gas_wall", "tab:orange", "D"),
     ("bed", "tab:brown", "s"),
-    ("wall", "tab:gray", "^"),
+    ("wall", "tab:purple", "^"),
 )
 
 
@@ -27,7 +27,7 @@ def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
         _, ax = plt.subplots(figsize=(7, 4.2))
     ax.plot(sol.z_nodes, sol.t_gas_nodes, color="tab:red", label="gas")
     ax.plot(sol.z_nodes, sol.t_bed_nodes, color="tab:brown", label="bed")
-    ax.plot(sol.z, sol.t_wall, color="tab:gray", label="inner wall")
+    ax.plot(sol.z, sol.t_wall, color="tab:purple", label="inner wall")
     if t_shell is not None:
         ax.plot(sol.z, t_shell, color="tab:blue", ls="--", label="shell")
     m = measurements or {}
