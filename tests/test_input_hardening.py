@@ -420,3 +420,12 @@ def test_sweep_name_cannot_write_outside_out(name, tmp_path, capsys):
     assert cli.main(argv) == 2
     assert "--name" in capsys.readouterr().err
     assert not any(tmp_path.iterdir())
+
+
+def test_zero_speed_and_endless_durations_refused(capsys):
+    from rotarykiln import cli
+
+    assert cli.main(["regime", "--diameter", "6", "m", "--speed", "0", "rpm", "--fill", "0.3"]) == 2
+    assert "--speed: 0 rpm is not > 0" in capsys.readouterr().err
+    assert cli.main(["transverse", "retort/case02", "--duration", "5", "fortnights"]) == 2
+    assert "--duration: 5 fortnights is not in (0, 1 h]" in capsys.readouterr().err

@@ -39,8 +39,10 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     radius = radius_from_args(args)
     speed = get_quantity(args, "speed", "rotation rate", required=True)
-    if speed < 0:
-        raise InputError("--speed", message=f"--speed: {' '.join(args.speed)} is not >= 0")
+    if not speed > 0:
+        raise InputError(
+            "--speed", message=f"--speed: {' '.join(args.speed)} is not > 0 (a drum that turns)"
+        )
     fill = get_quantity(args, "fill", "fraction")
     depth = get_quantity(args, "depth", "length")
     if fill is None and depth is None:

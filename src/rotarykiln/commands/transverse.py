@@ -13,8 +13,12 @@ import argparse
 from pathlib import Path
 
 from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print_json
+from rotarykiln.errors import InputError
 
 __all__ = ["register", "run"]
+
+
+MAX_DURATION = 3600.0  # s, longest simulated time of the transverse grid
 
 
 def register(sub) -> None:
@@ -54,7 +58,14 @@ def run(args: argparse.Namespace) -> int:
     case, stem = _load(args.case)
     spec = retort_spec_from_case(case)
     if args.duration:
-        spec = dataclasses.replace(spec, duration=get_quantity(args, "duration", "time"))
+        duration = get_quantity(args, "duration", "time")
+        if not 0 < duration <= MAX_DURATION:
+            raise InputError(
+                "--duration",
+                message=f"--duration: {' '.join(args.duration)} is not in (0, 1 h] "
+                "(the retort-zone grid advances in sub-second steps)",
+            )
+        spec = dataclasses.replace(spec, duration=duration)
     snaps = tuple(t for t in spec.snapshot_times if t <= spec.duration)
     map_times = snaps
     if args.gif:
