@@ -34,7 +34,7 @@ import numpy as np
 
 from rotarykiln.errors import InputError, check_positive
 from rotarykiln.geometry import CrossSection
-from rotarykiln.heat.gas_radiation import gorog_mean_beam_length
+from rotarykiln.kiln.discretisation import section_fields
 
 __all__ = ["KramersBed"]
 
@@ -93,20 +93,7 @@ class KramersBed:
         """``grid`` with the cross-section of each cell at the cell-mean depth ``h_cells``."""
         R = self.radius
         cs = CrossSection.from_depth(np.clip(h_cells, 1e-6 * R, 1.999 * R), R)
-        return dataclasses.replace(
-            grid,
-            fill=cs.fill,
-            half_angle=cs.theta,
-            full_angle=2.0 * cs.theta,
-            chord=cs.chord,
-            exposed_wall=cs.exposed_wall_arc,
-            covered_wall=cs.covered_wall_arc,
-            freeboard_area=cs.freeboard_area,
-            bed_area=cs.bed_area,
-            hydraulic_diameter=cs.hydraulic_diameter,
-            depth=cs.depth,
-            beam_length=gorog_mean_beam_length(2.0 * R, cs.depth),
-        )
+        return dataclasses.replace(grid, fill=cs.fill, **section_fields(cs, R))
 
     def initial_depth(self, length, z_nodes, mass_flow):
         """Depth (m) at the faces for a constant ``mass_flow`` (kg/s): the transport model's

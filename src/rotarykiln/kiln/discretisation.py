@@ -26,7 +26,7 @@ import numpy as np
 from rotarykiln.geometry import CrossSection
 from rotarykiln.heat.gas_radiation import gorog_mean_beam_length
 
-__all__ = ["Grid", "cell_grid"]
+__all__ = ["Grid", "cell_grid", "section_fields"]
 
 ABSENT_LAYER_THICKNESS = 1.0e-6  # m: a layer absent on a stretch is given this thickness
 
@@ -53,6 +53,29 @@ class Grid:
     radii: np.ndarray  # (n_layers + 1, n): interface radii, inner surface first
     present: np.ndarray  # (n_layers, n) bool
     heat_release: np.ndarray  # W/m per cell (sums to the total over the kiln)
+
+
+def section_fields(cs: CrossSection, radius: float) -> dict:
+    """The cross-section fields of a :class:`Grid` (all but fill) from a :class:`CrossSection`.
+
+    Examples
+    --------
+    >>> f = section_fields(CrossSection.from_fill(0.15, 0.1), 0.1)
+    >>> round(float(f["chord"]), 4), round(float(f["beam_length"]), 4)
+    (0.1622, 0.1506)
+    """
+    return dict(
+        half_angle=cs.theta,
+        full_angle=2.0 * cs.theta,
+        chord=cs.chord,
+        exposed_wall=cs.exposed_wall_arc,
+        covered_wall=cs.covered_wall_arc,
+        freeboard_area=cs.freeboard_area,
+        bed_area=cs.bed_area,
+        hydraulic_diameter=cs.hydraulic_diameter,
+        depth=cs.depth,
+        beam_length=gorog_mean_beam_length(2.0 * radius, cs.depth),
+    )
 
 
 def cell_grid(
@@ -108,7 +131,6 @@ def cell_grid(
         raise InputError(f"{section}.fill (cell {j}, z = {z[j]:.4g} m)", float(fill[j]), "> 0")
     cs = CrossSection.from_fill(fill, radius)
     R = radius
-    theta = cs.theta
     present = np.array([layer.present(z) for layer in layers]).reshape(len(layers), n)
     thick = np.array(
         [
@@ -134,17 +156,8 @@ def cell_grid(
         z_nodes=zn,
         z=z,
         dz=dz,
+        **section_fields(cs, R),
         fill=fill,
-        half_angle=theta,
-        full_angle=2.0 * theta,
-        chord=cs.chord,
-        exposed_wall=cs.exposed_wall_arc,
-        covered_wall=cs.covered_wall_arc,
-        freeboard_area=cs.freeboard_area,
-        bed_area=cs.bed_area,
-        hydraulic_diameter=cs.hydraulic_diameter,
-        depth=cs.depth,
-        beam_length=gorog_mean_beam_length(2 * R, cs.depth),
         radii=radii,
         present=present,
         heat_release=q_rel,
