@@ -18,7 +18,7 @@ from rotarykiln.kiln.solve import solve_kiln
 
 @pytest.fixture(scope="module")
 def barr_t4():
-    kiln, _ = heat_kiln_from_case(load_case(builtin_case_path("heat/barr_T4")))
+    kiln, _ = heat_kiln_from_case(load_case(builtin_case_path("barr_T4")))
     assert kiln.flame is not None and kiln.flame.combustion == "instant"
     solve_kiln(kiln, 100)  # first-call costs (imports, caches) outside the timing
     return kiln

@@ -8,7 +8,7 @@ from rotarykiln.kiln.tscheng import tscheng_kiln, validate_all
 
 
 def test_bench_flame_solve_radiation_on(benchmark):
-    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("heat/ubc_pilot_flame")))
+    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     assert kiln.closures.radiation
     sol = benchmark(solve_kiln, kiln, cells)
     assert abs(sol.energy_closure) < 1e-6

@@ -59,7 +59,7 @@ def test_bench_runner_overhead_2000_trivial_cases_2_processes_with_store(benchma
 
 
 def test_bench_heat_sweep_1000_cases_2_processes(benchmark):
-    base = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    base = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     design = latin_hypercube(
         [
             "operation.speed=uniform(1 rpm, 3 rpm)",

@@ -21,7 +21,7 @@ def test_every_builtin_case_round_trips(name, tmp_path):
 
 
 def test_quantities_are_written_with_units():
-    data = dump_case(load_case(builtin_case_path("heat/barr_T4")))
+    data = dump_case(load_case(builtin_case_path("barr_T4")))
     assert data["kiln"] == {"length": "5.5 m", "diameter": "0.411 m", "slope": "0.8 deg"}
     assert data["operation"] == {"speed": "1.5 rpm", "feed": "62 kg/h"}
     assert data["material"]["particle_size"] == "2.5 mm"
@@ -31,7 +31,7 @@ def test_quantities_are_written_with_units():
 
 
 def test_defaults_stay_implicit():
-    data = dump_case(load_case(builtin_case_path("heat/barr_T4")))
+    data = dump_case(load_case(builtin_case_path("barr_T4")))
     assert "transport" not in data and "cells" not in data["heat"]
 
 
@@ -57,7 +57,7 @@ def test_any_si_value_is_written_so_that_it_reads_back_exactly(value, kind):
 
 
 def test_an_edited_case_round_trips(tmp_path):
-    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     data["operation"]["speed"] = "0.3 rad/s"
     data["kiln"]["slope"] = "3 %"
     data["heat"]["gas"]["flow"] = "0.01 kg/s"

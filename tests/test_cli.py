@@ -160,7 +160,7 @@ def test_every_subcommand_help_renders(capsys, path):
 
 
 def test_run_accepts_a_builtin_case_name(capsys, tmp_path):
-    code, out, _ = run_cli(capsys, "run", "heat/tscheng_A16", "--out", str(tmp_path), "--no-plots")
+    code, out, _ = run_cli(capsys, "run", "tscheng_A16", "--out", str(tmp_path), "--no-plots")
     assert code == 0
     assert json.loads((tmp_path / "summary.json").read_text())["name"] == "Tscheng 1978 run A16"
 
@@ -206,7 +206,7 @@ def test_rpm_spellings(capsys, spelling):
 def test_out_that_is_a_file(capsys, tmp_path):
     f = tmp_path / "results"
     f.write_text("")
-    code, _, err = run_cli(capsys, "run", "heat/tscheng_A16", "--out", str(f), "--no-plots")
+    code, _, err = run_cli(capsys, "run", "tscheng_A16", "--out", str(f), "--no-plots")
     assert code == 2 and err.strip().endswith("is a file, not a folder")
 
 

@@ -12,7 +12,7 @@ from rotarykiln.case import load_case, parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
 
-BASE = Path(builtin_case_path("heat/tscheng_A16")).read_text(encoding="utf-8")
+BASE = Path(builtin_case_path("tscheng_A16")).read_text(encoding="utf-8")
 
 
 @contextmanager
@@ -229,7 +229,7 @@ def test_weirs_need_the_scott_model():
 @pytest.mark.parametrize("section", ["heat", "chemistry"])
 @pytest.mark.parametrize("cells", [3, 20_001, 10**7])
 def test_cells_are_bounded(section, cells):
-    case = "heat/tscheng_A16" if section == "heat" else "limestone_calcination"
+    case = "tscheng_A16" if section == "heat" else "limestone_calcination"
     data = yaml.safe_load(Path(builtin_case_path(case)).read_text(encoding="utf-8"))
     data[section]["cells"] = cells
     with refused_quickly(f"{section}.cells: {cells} is not an integer in [4, 20000]"):
@@ -252,8 +252,8 @@ def test_bed_points_are_bounded(points, capsys):
 
 # --- messages in English ---------------------------------------------------------------------
 
-HEAT_CASE = "heat/tscheng_A16"
-FLAME_CASE = "heat/ubc_pilot_flame"
+HEAT_CASE = "tscheng_A16"
+FLAME_CASE = "ubc_pilot_flame"
 PYDANTIC_TEXT = ("Input should", "None", "Field required", "Value error", "function-", "str.")
 
 
@@ -353,7 +353,7 @@ def test_measurement_lists_of_unequal_length_refused_at_load():
 
     from rotarykiln.cases import builtin_case_path
 
-    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     data["heat"]["measurements"]["t_bed"] = data["heat"]["measurements"]["t_bed"][:-1]
     with pytest.raises(InputError, match="z_bed has 5 positions but t_bed 4 temperatures"):
         parse_case(data)
@@ -377,12 +377,12 @@ def test_out_folder_checked_writable_before_solving(tmp_path, monkeypatch, capsy
         raise PermissionError(13, "Permission denied")
 
     monkeypatch.setattr(tempfile, "NamedTemporaryFile", refuse)
-    code = cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path / "out")])
+    code = cli.main(["run", "tscheng_A16", "--out", str(tmp_path / "out")])
     err = capsys.readouterr().err
     assert code == 2 and "--out: cannot write in" in err and "Traceback" not in err
     assert not any((tmp_path / "out").iterdir())  # nothing solved, nothing written
     long = tmp_path / ("x" * 300)
-    assert cli.main(["run", "heat/tscheng_A16", "--out", str(long)]) == 2
+    assert cli.main(["run", "tscheng_A16", "--out", str(long)]) == 2
 
 
 @pytest.mark.parametrize(
@@ -402,7 +402,7 @@ def test_extreme_values_never_reach_a_solver(path, value, field):
 
     from rotarykiln.cases import builtin_case_path
 
-    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     node = data
     for key in path[:-1]:
         node = node[key]
@@ -415,7 +415,7 @@ def test_extreme_values_never_reach_a_solver(path, value, field):
 def test_sweep_name_cannot_write_outside_out(name, tmp_path, capsys):
     from rotarykiln import cli
 
-    argv = ["sweep", "--case", "heat/tscheng_A16", "--model", "heat"]
+    argv = ["sweep", "--case", "tscheng_A16", "--model", "heat"]
     argv += ["--grid", "operation.speed=1 rpm,2 rpm", "--out", str(tmp_path), "--name", name]
     assert cli.main(argv) == 2
     assert "--name" in capsys.readouterr().err

@@ -34,7 +34,7 @@ def test_failed_write_keeps_previous_file(tmp_path):
 def test_no_plots_writes_no_figure(tmp_path):
     from rotarykiln import cli
 
-    assert cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
+    assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
     names = {p.name for p in tmp_path.iterdir()}
     assert "heat_profiles.csv" in names and "summary.json" in names
     assert not any(n.endswith((".png", ".svg", ".pdf")) for n in names)
@@ -49,7 +49,7 @@ def test_a_failing_figure_keeps_the_tables(tmp_path, monkeypatch, capsys):
         raise RuntimeError("renderer exploded")
 
     monkeypatch.setattr(matplotlib.figure.Figure, "savefig", broken)
-    assert cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path)]) == 0
+    assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path)]) == 0
     assert "figure heat_profiles.png not written: renderer exploded" in capsys.readouterr().err
     names = {p.name for p in tmp_path.iterdir()}
     assert {"heat_profiles.csv", "heat_summary.json", "summary.json"} <= names
@@ -63,7 +63,7 @@ def test_a_second_run_into_the_same_folder_leaves_no_file_of_the_first(tmp_path)
     mine.write_text("keep me")
     assert cli.main(["run", "limestone_fired", "--out", str(tmp_path), "--no-plots"]) == 0
     assert (tmp_path / "reacting_profiles.csv").is_file()
-    assert cli.main(["run", "heat/tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
+    assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
     names = {p.name for p in tmp_path.iterdir()}
     assert "heat_profiles.csv" in names and "reacting_profiles.csv" not in names
     assert mine.read_text() == "keep me"

@@ -74,7 +74,7 @@ def barr_t4(tmp_path_factory):
     out = tmp_path_factory.mktemp("barr_T4")
     err = io.StringIO()
     with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-        assert main(["run", "heat/barr_T4", "--out", str(out), "--report", "--json"]) == 0
+        assert main(["run", "barr_T4", "--out", str(out), "--report", "--json"]) == 0
     report = _Report()
     report.feed((out / "report.html").read_text(encoding="utf-8"))
     report.stderr = err.getvalue()
@@ -113,7 +113,7 @@ def test_figures_are_embedded_and_nothing_is_fetched(barr_t4):
 def test_warnings_version_and_case_hash(barr_t4, capsys):
     _, report, _ = barr_t4
     assert any("Li et al. (2005)" in w for w in report.warnings)
-    assert report.hash == case_hash(load_case(builtin_case_path("heat/barr_T4")))
+    assert report.hash == case_hash(load_case(builtin_case_path("barr_T4")))
     html = (barr_t4[0] / "report.html").read_text()
     assert f"rotarykiln {__version__}" in html or f'"version">{__version__}<' in html
 

@@ -31,7 +31,7 @@ def test_every_builtin_case_validates_against_the_schema(name):
 
 
 def test_a_misspelt_key_is_rejected():
-    data = _case("heat/barr_T4")
+    data = _case("barr_T4")
     data["kiln"]["lenght"] = data["kiln"].pop("length")
     errors = list(VALIDATOR.iter_errors(data))
     assert errors
@@ -46,7 +46,7 @@ def test_a_misspelt_top_level_section_and_a_nested_key_are_rejected():
     data = _case("limestone_fired")
     data["operaton"] = data.pop("operation")
     assert not VALIDATOR.is_valid(data)
-    data = _case("heat/barr_T4")
+    data = _case("barr_T4")
     data["heat"]["burner"]["primary_air"]["temprature"] = "300 K"
     assert not VALIDATOR.is_valid(data)
 
@@ -56,7 +56,7 @@ def test_a_misspelt_top_level_section_and_a_nested_key_are_rejected():
     [("kiln", "length", "5.5 m"), ("kiln", "length", 5.5), ("operation", "speed", "1.5 rpm")],
 )
 def test_quantities_accept_numbers_and_unit_strings(section, key, value):
-    data = _case("heat/barr_T4")
+    data = _case("barr_T4")
     data[section][key] = value
     assert VALIDATOR.is_valid(data)
     data[section][key] = [value]  # but not a list

@@ -65,7 +65,7 @@ def main():
     plt.close(fig)
 
     # 3. flame case, radiation on and off
-    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("heat/ubc_pilot_flame")))
+    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     on = solve_kiln(kiln, cells)
     off = solve_kiln(replace(kiln, closures=replace(kiln.closures, radiation=False)), cells)
     fig, ax = plt.subplots(figsize=(7, 4.2))

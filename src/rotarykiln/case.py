@@ -1062,7 +1062,7 @@ def load_case(path: str | Path) -> Case:
     Examples
     --------
     >>> from rotarykiln.cases import builtin_case_path
-    >>> case = load_case(builtin_case_path("heat/tscheng_A16"))
+    >>> case = load_case(builtin_case_path("tscheng_A16"))
     >>> round(case.operation.speed, 4)
     0.1571
     """

@@ -303,7 +303,7 @@ def dump_case(case: BaseModel) -> dict[str, Any]:
     --------
     >>> from rotarykiln.case import load_case, parse_case
     >>> from rotarykiln.cases import builtin_case_path
-    >>> case = load_case(builtin_case_path("heat/barr_T4"))
+    >>> case = load_case(builtin_case_path("barr_T4"))
     >>> data = dump_case(case)
     >>> data["operation"]
     {'speed': '1.5 rpm', 'feed': '62 kg/h'}
@@ -349,7 +349,7 @@ def case_to_yaml(case: BaseModel) -> str:
     --------
     >>> from rotarykiln.case import load_case
     >>> from rotarykiln.cases import builtin_case_path
-    >>> print(case_to_yaml(load_case(builtin_case_path("heat/barr_T4"))).splitlines()[3])
+    >>> print(case_to_yaml(load_case(builtin_case_path("barr_T4"))).splitlines()[3])
     kiln:
     """
     return yaml.dump(
@@ -397,7 +397,7 @@ def case_hash(case: BaseModel) -> str:
     --------
     >>> from rotarykiln.case import load_case, parse_case
     >>> from rotarykiln.cases import builtin_case_path
-    >>> case = load_case(builtin_case_path("heat/barr_T4"))
+    >>> case = load_case(builtin_case_path("barr_T4"))
     >>> case_hash(parse_case(dump_case(case))) == case_hash(case)
     True
     """

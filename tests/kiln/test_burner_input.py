@@ -14,7 +14,7 @@ from rotarykiln.kiln.run import heat_kiln_from_case
 
 
 def _barr(**burner):
-    data = yaml.safe_load(builtin_case_path("heat/barr_T4").read_text())
+    data = yaml.safe_load(builtin_case_path("barr_T4").read_text())
     b = data["heat"]["burner"]
     for key, value in burner.items():
         if value is None:
@@ -98,7 +98,7 @@ def test_burner_dataclass_checks():
 
 
 def test_heat_gas_composition_checked_at_load():
-    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     data["heat"]["gas"]["composition"] = "O2:0.21, N2:nan"
     with pytest.raises(InputError, match="heat.gas.composition"):
         parse_case(data)

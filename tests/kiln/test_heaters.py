@@ -82,7 +82,7 @@ def test_heaters_from_a_case_file():
     from rotarykiln.cases import builtin_case_path
     from rotarykiln.kiln.run import run_heat_case
 
-    data = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     data["heat"]["heaters"] = [
         {"start": "1 m", "end": "2 m", "power": "0.5 kW"},
         {"start": "0.2 m", "end": "0.6 m", "shell_temperature": "150 degC"},

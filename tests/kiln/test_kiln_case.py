@@ -23,7 +23,7 @@ def _data(name):
 
 def test_builtin_tscheng_case_equals_module_setup():
     # the YAML case and the programmatic set-up of run A16 describe the same kiln
-    data = _data("heat/tscheng_A16")
+    data = _data("tscheng_A16")
     assert data["heat"]["lining"][2]["thickness"] == f"{insulation_thickness() * 1000:.2f} mm"
     a = run_heat_case(parse_case(data))
     b = solve_kiln(tscheng_kiln("A16"))
@@ -32,7 +32,7 @@ def test_builtin_tscheng_case_equals_module_setup():
 
 
 def test_flame_case_runs_and_writes(tmp_path):
-    case = parse_case(_data("heat/ubc_pilot_flame"))
+    case = parse_case(_data("ubc_pilot_flame"))
     summary = heat_runner(case, tmp_path)
     for name in ("heat_profiles.csv", "heat_summary.json", "heat_profiles.png"):
         assert (tmp_path / name).is_file()
@@ -51,7 +51,7 @@ def test_flame_case_runs_and_writes(tmp_path):
     ],
 )
 def test_bad_heat_sections(path, value, message):
-    data = _data("heat/tscheng_A16")
+    data = _data("tscheng_A16")
     node = data
     for key in path[:-1]:
         node = node.setdefault(key, {}) if isinstance(node, dict) else node[key]
@@ -61,20 +61,20 @@ def test_bad_heat_sections(path, value, message):
 
 
 def test_bad_heat_values_at_model_level():
-    data = _data("heat/tscheng_A16")
+    data = _data("tscheng_A16")
     data["heat"]["closures"] = {"gas_wall": "dittus"}
     with pytest.raises(InputError, match="heat.closures.gas_wall"):
         heat_kiln_from_case(parse_case(data))
-    data = _data("heat/tscheng_A16")
+    data = _data("tscheng_A16")
     data["heat"]["gas"]["flow"] = "0 kg/h"
     with pytest.raises(InputError, match="heat.gas_flow"):
         heat_kiln_from_case(parse_case(data))
-    data = _data("heat/tscheng_A16")
+    data = _data("tscheng_A16")
     data["heat"]["lining"][0]["material"] = "cheese"
     # caught by the case schema now, at its full path
     with pytest.raises(InputError, match=r"heat\.lining\.0\.material"):
         heat_kiln_from_case(parse_case(data))
-    data = _data("heat/tscheng_A16")
+    data = _data("tscheng_A16")
     del data["operation"]["feed"]
     with pytest.raises(InputError, match="operation.feed"):
         heat_kiln_from_case(parse_case(data))
@@ -86,7 +86,7 @@ def test_cli_run_with_heat_runner(tmp_path, monkeypatch, capsys):
     from rotarykiln.commands import run as run_cmd
 
     monkeypatch.setitem(run_cmd.RUNNERS, "heat", "rotarykiln.kiln.run:heat_runner")
-    case_path = builtin_case_path("heat/tscheng_A16")
+    case_path = builtin_case_path("tscheng_A16")
     code = cli.main(["run", str(case_path), "--out", str(tmp_path), "--json"])
     assert code == 0
     summary = json.loads(capsys.readouterr().out)
@@ -99,7 +99,7 @@ def test_heat_kiln_is_picklable():
     # studies may ship kilns to worker processes (dask)
     import pickle
 
-    data = _data("heat/ubc_pilot_flame")
+    data = _data("ubc_pilot_flame")
     data["heat"]["burner"].update(combustion="burnout", flame_length="1 m")
     kiln, _ = heat_kiln_from_case(parse_case(data))
     clone = pickle.loads(pickle.dumps(kiln))

@@ -28,7 +28,7 @@ def _finite(sol):
 
 @pytest.fixture(scope="module")
 def flame_kiln():
-    kiln, _ = heat_kiln_from_case(load_case(builtin_case_path("heat/ubc_pilot_flame")))
+    kiln, _ = heat_kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     return kiln
 
 

@@ -150,7 +150,7 @@ REACTING = {
 
 # computed with commit 1063545, before the speed work (faces and cells 0, 10, 25, 50, 75, 99)
 HEAT = {
-    "heat/barr_T4": {
+    "barr_T4": {
         "t_bed_nodes": [
             298.15,
             579.5467557402712,
@@ -184,7 +184,7 @@ HEAT = {
             420.92607357403824,
         ],
     },
-    "heat/tscheng_A16": {
+    "tscheng_A16": {
         "t_bed_nodes": [
             298.15,
             328.07107331335493,

@@ -131,7 +131,7 @@ def test_bad_input_is_one_line():
 
 def _heat_data(tmp_path, seed=0):
     """Synthetic window temperatures of Tscheng A16 computed at 24.6 kg/h of gas, 5 K noise."""
-    base = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    base = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     out = heat_profile_model(base)
     rng = np.random.default_rng(seed)
     rows = []
@@ -153,7 +153,7 @@ def test_calibrate_command_recovers_the_gas_flow_of_the_heat_model(tmp_path, cap
     data = _heat_data(tmp_path)
     args = [
         "calibrate",
-        "heat/tscheng_A16",
+        "tscheng_A16",
         "--model",
         "heat_profiles",
         "--data",

@@ -14,7 +14,7 @@ def _case(name):
 def test_heat_model_sweep_hotter_gas_heats_the_bed_more():
     res = run_sweep(
         heat_model,
-        _case("heat/tscheng_A16"),
+        _case("tscheng_A16"),
         grid({"heat.gas.inlet_temperature": ["500 K", "600 K"]}),
         executor="serial",
     )
@@ -25,7 +25,7 @@ def test_heat_model_sweep_hotter_gas_heats_the_bed_more():
 
 
 def test_transport_model_residence_time_rises_with_a_dam():
-    base = _case("heat/tscheng_A16")
+    base = _case("tscheng_A16")
     base["transport"] = {"model": "kramers"}
     open_end = transport_model(base)
     base["transport"] = {"model": "kramers", "dam_height": "4 cm"}
@@ -40,7 +40,7 @@ def test_sweep_cli_accepts_model_names(capsys, tmp_path):
         [
             "sweep",
             "--case",
-            "heat/tscheng_A16",
+            "tscheng_A16",
             "--model",
             "heat",
             "--grid",
@@ -53,7 +53,7 @@ def test_sweep_cli_accepts_model_names(capsys, tmp_path):
     )
     assert code == 0
     assert (tmp_path / "sweep.csv").exists()
-    code = main(["sweep", "--case", "heat/tscheng_A16", "--model", "nonsense", "--grid", "a=1"])
+    code = main(["sweep", "--case", "tscheng_A16", "--model", "nonsense", "--grid", "a=1"])
     assert code == 2
     assert "a model name" in capsys.readouterr().err
 

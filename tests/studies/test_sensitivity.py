@@ -69,7 +69,7 @@ def test_sensitivity_command_on_the_heat_model(tmp_path, capsys):
     out = tmp_path / "sens"
     args = [
         "sensitivity",
-        "heat/tscheng_A16",
+        "tscheng_A16",
         "--model",
         "heat",
         "--method",

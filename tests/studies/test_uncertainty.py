@@ -22,7 +22,7 @@ def test_bands_of_the_heat_profiles(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
-    base = yaml.safe_load(builtin_case_path("heat/tscheng_A16").read_text())
+    base = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
     res = propagate(heat_profile_model, base, PARAMS, 16, executor="serial")
     assert len(res.samples) == 16 and res.n_failed == 0
     assert {"bed_temperature", "gas_temperature", "wall_temperature"} <= set(res.quantities)
@@ -45,7 +45,7 @@ def test_bands_of_the_heat_profiles(tmp_path):
 def test_uncertainty_command(tmp_path, capsys):
     args = [
         "sensitivity",
-        "heat/tscheng_A16",
+        "tscheng_A16",
         "--model",
         "heat_profiles",
         "--method",

@@ -1,6 +1,6 @@
 """Barr's natural-gas-fired UBC pilot kiln, trials T3, T4, T6: prediction from measured inputs.
 
-Nothing is fitted: the cases (src/rotarykiln/cases/heat/barr_T*.yaml) hold the measured inputs
+Nothing is fitted: the cases (src/rotarykiln/cases/barr_T*.yaml) hold the measured inputs
 and the data note's lining and emissivities; the flows are read as normal litres (0 degC, an
 assumption the same for every trial, see docs/validation.md). The default burner model is
 instant burn-out at the burner (Hanein et al. 2017). Scored: RMSE of bed, gas 2.5 cm above the
@@ -33,7 +33,7 @@ def _rmse(model, measured):
 
 @pytest.fixture(scope="module")
 def solutions():
-    return {t: run_heat_case(load_case(builtin_case_path(f"heat/barr_{t}"))) for t in TRIALS}
+    return {t: run_heat_case(load_case(builtin_case_path(f"barr_{t}"))) for t in TRIALS}
 
 
 def test_cases_hold_the_data_file_measurements():
@@ -41,7 +41,7 @@ def test_cases_hold_the_data_file_measurements():
     path = resources.files("rotarykiln") / "data" / "barr1986" / "barr_pilot_kiln_T3_T4_T6.yaml"
     data = yaml.safe_load(path.read_text())
     for t in TRIALS:
-        m = load_case(builtin_case_path(f"heat/barr_{t}")).heat.measurements
+        m = load_case(builtin_case_path(f"barr_{t}")).heat.measurements
         src = data["cases"][t]["measured_K"]
         assert m.t_bed == pytest.approx([v for _, v in src["T_bed"]])
         assert m.t_gas == pytest.approx([v for _, v in src["T_gas_off_bed"]])
@@ -82,7 +82,7 @@ def test_balances_close_and_sheet_adds_up(solutions):
 def test_firing_rate_matches_the_reference_note():
     # flames.md section 6 (Cantera, 0 degC basis): Q = 50.8, 70.5, 32.2 kW LHV
     for t, q in zip(TRIALS, (50.8e3, 70.5e3, 32.2e3), strict=True):
-        case = load_case(builtin_case_path(f"heat/barr_{t}"))
+        case = load_case(builtin_case_path(f"barr_{t}"))
         from rotarykiln.kiln.run import heat_kiln_from_case
 
         kiln, _ = heat_kiln_from_case(case)
@@ -90,7 +90,7 @@ def test_firing_rate_matches_the_reference_note():
 
 
 def test_mesh_doubling_changes_profiles_by_less_than_2_K():
-    data = yaml.safe_load(builtin_case_path("heat/barr_T4").read_text())
+    data = yaml.safe_load(builtin_case_path("barr_T4").read_text())
     sols = []
     for n in (100, 200):
         data["heat"]["cells"] = n
@@ -102,7 +102,7 @@ def test_mesh_doubling_changes_profiles_by_less_than_2_K():
 
 def test_co_current_variant_converges():
     # every built-in fired heat case (the fired limestone kiln: tests/kiln/test_fired_reacting.py)
-    for name in [f"heat/barr_{t}" for t in TRIALS] + ["heat/ubc_pilot_flame"]:
+    for name in [f"barr_{t}" for t in TRIALS] + ["ubc_pilot_flame"]:
         data = yaml.safe_load(builtin_case_path(name).read_text())
         data["heat"]["counter_current"] = False
         sol = run_heat_case(parse_case(data))
@@ -112,7 +112,7 @@ def test_co_current_variant_converges():
 
 @pytest.mark.parametrize("counter_current", [True, False])
 def test_mixing_limited_burnout_option_converges_and_closes(counter_current):
-    data = yaml.safe_load(builtin_case_path("heat/barr_T4").read_text())
+    data = yaml.safe_load(builtin_case_path("barr_T4").read_text())
     data["heat"]["burner"].update(combustion="burnout", nozzle_diameter="40 mm")
     data["heat"]["counter_current"] = counter_current
     sol = run_heat_case(parse_case(data))

@@ -9,12 +9,12 @@ OUT/residuals.csv, the residual plot OUT/residuals.png, OUT/calibration.json and
 case OUT/calibrated.yaml (values with their units).
 
 Several cases (operating points) with the same fitted fields: give them all (``NAME=FILE`` or
-built-in names, e.g. ``heat/tscheng_A16``) and name each point's case in a ``case`` column of
+built-in names, e.g. ``tscheng_A16``) and name each point's case in a ``case`` column of
 the data; the covariance is then scaled by chi2/dof unless ``--absolute-uncertainty``.
 
 Example::
 
-    rotarykiln calibrate heat/tscheng_A16 --model heat_profiles --data plant.csv \\
+    rotarykiln calibrate tscheng_A16 --model heat_profiles --data plant.csv \\
         --fit "heat.gas.flow=20 kg/h [5 kg/h, 60 kg/h]" --fit "heat.wall_emissivity=0.8 [0.3, 1]" \\
         --out cal/
 """

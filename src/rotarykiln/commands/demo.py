@@ -1,6 +1,6 @@
 """``rotarykiln demo``: run the main built-in example and write its results and plots.
 
-The demonstration is Tscheng's hot-air pilot kiln, run A16 (built-in case ``heat/tscheng_A16``):
+The demonstration is Tscheng's hot-air pilot kiln, run A16 (built-in case ``tscheng_A16``):
 the steady counter-current heat model from the measured inputs, with the measured gas, bed and wall
 temperatures overlaid on the computed profiles, and the HTML report of the run (``report.html``).
 """
@@ -16,14 +16,14 @@ from rotarykiln.commands.run import run_case
 from rotarykiln.outputs import write_text_atomic
 from rotarykiln.report import format_table
 
-DEMO_CASE = "heat/tscheng_A16"
+DEMO_CASE = "tscheng_A16"
 
 
 def register(sub) -> None:
     p = sub.add_parser(
         "demo",
         help="run the built-in demonstration case",
-        description="Run Tscheng's hot-air pilot kiln (run A16, built-in case heat/tscheng_A16): "
+        description="Run Tscheng's hot-air pilot kiln (run A16, built-in case tscheng_A16): "
         "heat profiles with the measured temperatures, regime map, cross-section, summary, and "
         "the HTML report of the run (report.html).",
     )

@@ -108,7 +108,7 @@ def _stamps(out: Path) -> dict[Path, int]:
 
 
 def case_path(spec: str) -> Path:
-    """A case file path, or the path of the built-in case of that name (``heat/tscheng_A16``)."""
+    """A case file path, or the path of the built-in case of that name (``tscheng_A16``)."""
     path = Path(spec)
     if path.is_file() or path.suffix in (".yaml", ".yml"):
         return path

@@ -11,13 +11,13 @@ use ``--model heat_profiles``).
 
 Example::
 
-    rotarykiln sensitivity heat/tscheng_A16 --model heat --method sobol \\
+    rotarykiln sensitivity tscheng_A16 --model heat --method sobol \\
         --param "operation.speed=uniform(1 rpm, 3 rpm)" \\
         --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" \\
         --param "heat.gas.flow=uniform(20 kg/h, 30 kg/h)" \\
         --output bed_outlet_temperature_K --n 64 --out sens/
 
-    rotarykiln sensitivity heat/tscheng_A16 --model heat_profiles --method uncertainty \\
+    rotarykiln sensitivity tscheng_A16 --model heat_profiles --method uncertainty \\
         --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" --n 100 --out unc/
 """
 

@@ -17,7 +17,7 @@ Example::
         --oat chemistry.residence_time="3000 s,6480 s,10000 s" \\
         --oat chemistry.gas.steam_flow="0.0025 kg/s,0.005 kg/s" --out results
 
-    rotarykiln sweep --case heat/tscheng_A16 --model heat --lhs 200 \\
+    rotarykiln sweep --case tscheng_A16 --model heat --lhs 200 \\
         --param "operation.speed=uniform(1 rpm, 3 rpm)" \\
         --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" --out lhs/
 """

@@ -158,7 +158,7 @@ def run_heat_case(case) -> KilnSolution:
     --------
     >>> from rotarykiln.case import load_case
     >>> from rotarykiln.cases import builtin_case_path
-    >>> sol = run_heat_case(load_case(builtin_case_path("heat/tscheng_A16")))
+    >>> sol = run_heat_case(load_case(builtin_case_path("tscheng_A16")))
     >>> abs(sol.energy_closure) < 1e-6
     True
     """

@@ -1,6 +1,6 @@
 """Tscheng's 44 pilot-kiln runs as case dicts and measured data, for studies and calibration.
 
-Each run's case is the built-in ``heat/tscheng_A16`` case with the run's measured inputs (air
+Each run's case is the built-in ``tscheng_A16`` case with the run's measured inputs (air
 flow, speed, incline, fill, solids flow, inlet air temperature = the gas reading at 2.32 m) and
 its measured profiles; :func:`tscheng_measurements` gives the bed and gas temperatures as a
 calibration table (``case, quantity, z, value, uncertainty``), by default in the window
@@ -36,7 +36,7 @@ def tscheng_cases(runs=None) -> dict[str, dict]:
     (44, '3.0 rpm', '24.6 kg/h')
     """
     table = _runs()
-    base = builtin_case("heat/tscheng_A16")
+    base = builtin_case("tscheng_A16")
     out = {}
     for run in runs or list(table.index):
         r = table.loc[run]
