@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 DEMO_OUT ?= demo-output
 
-.PHONY: demo test bench lint format schema docs clean
+.PHONY: demo test bench lint format schema docs clean browser
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -19,7 +19,12 @@ demo: $(STAMP)
 	$(BIN)/rotarykiln demo --out $(DEMO_OUT)
 	@echo "demo results, plots and report written to $(DEMO_OUT)/ (open $(DEMO_OUT)/report.html)"
 
-test: $(STAMP)
+browser:  # Debian's Chromium and its driver for the browser tests (tests/app/); no browser download
+	@command -v chromium >/dev/null && command -v chromedriver >/dev/null || { \
+	  SUDO=$$([ "$$(id -u)" = 0 ] || echo sudo); \
+	  $$SUDO apt-get update -q && $$SUDO apt-get install -y -q chromium chromium-driver; }
+
+test: $(STAMP) browser
 	$(BIN)/ruff check src tests benchmarks docs/scripts examples
 	$(BIN)/ruff format --check src tests benchmarks docs/scripts examples
 	MPLBACKEND=Agg $(BIN)/python -m pytest -q
