@@ -1,0 +1,167 @@
+"""What the page does: load a case, check a field as it is typed, run, show the results.
+
+Errors never replace results: a failed load or run changes only the error messages (next to the
+field they concern when it is a shown input, else next to the upload or the Run button), so what
+was already computed stays on the page and the fields keep what the user typed.
+"""
+
+from __future__ import annotations
+
+import logging
+import time
+
+import yaml
+from dash import ALL, MATCH, Input, Output, State, ctx, dcc, no_update
+
+from rotarykiln.app.figures import composition_figure, temperature_figure
+from rotarykiln.app.inputs import apply_edits, check_value, field_of_error, present_inputs
+from rotarykiln.app.layout import input_rows, results_view
+from rotarykiln.app.loading import load_builtin, load_upload
+from rotarykiln.app.running import RunStore, outlet_temperature
+from rotarykiln.case import parse_case
+from rotarykiln.errors import ConvergenceError, InputError
+
+__all__ = ["register_callbacks"]
+
+log = logging.getLogger(__name__)
+
+
+def _dump(raw: dict) -> str:
+    return yaml.safe_dump(raw, sort_keys=False, allow_unicode=True, width=100)
+
+
+def _validate(raw: dict, source: str, paths: list[str]) -> tuple[dict[str, str], str]:
+    """Errors of a raw case: (path -> message for a shown input, message for the rest)."""
+    try:
+        parse_case(raw, source=source)
+    except InputError as exc:
+        path = field_of_error(exc, paths)
+        return ({path: str(exc)}, "") if path else ({}, str(exc))
+    return {}, ""
+
+
+def register_callbacks(app, store: RunStore) -> None:
+    """Attach the page's callbacks to a Dash ``app`` whose runs go to ``store``."""
+
+    @app.callback(
+        Output("case-store", "data"),
+        Output("inputs", "children"),
+        Output("upload-error", "children"),
+        Output("case-error", "children"),
+        Output("case-info", "children"),
+        Output("case-yaml", "children"),
+        Output("case-picker", "value"),
+        Input("case-picker", "value"),
+        Input("case-upload", "contents"),
+        State("case-upload", "filename"),
+    )
+    def load(name, contents, filename):
+        if ctx.triggered_id == "case-upload":
+            try:
+                raw = load_upload(contents, filename)
+            except InputError as exc:  # nothing else changes: the loaded case stays
+                return (no_update,) * 2 + (str(exc),) + (no_update,) * 4
+            source, info, picker = str(filename), f"Loaded: {filename} (uploaded)", None
+        else:
+            if not name:
+                return (no_update,) * 7
+            try:
+                raw = load_builtin(name)
+            except InputError as exc:
+                return (no_update,) * 2 + (str(exc),) + (no_update,) * 4
+            source, info, picker = name, f"Loaded: {name} (built-in)", no_update
+        items = present_inputs(raw)
+        field_errors, case_error = _validate(raw, source, [i.path for i, _ in items])
+        if case_error:
+            case_error = f"This case has an error: {case_error}"
+        data = {"yaml": _dump(raw), "source": source}
+        return (
+            data,
+            input_rows(items, field_errors),
+            "",
+            case_error,
+            info,
+            data["yaml"],
+            picker,
+        )
+
+    @app.callback(
+        Output({"type": "input-error", "path": MATCH}, "children"),
+        Input({"type": "main-input", "path": MATCH}, "value"),
+        Input("run-errors", "data"),
+        State({"type": "main-input", "path": MATCH}, "id"),
+        prevent_initial_call=True,
+    )
+    def check_field(value, run_errors, ident):
+        path = ident["path"]
+        if ctx.triggered_id == "run-errors" and path in (run_errors or {}).get("errors", {}):
+            return run_errors["errors"][path]
+        try:
+            check_value(path, value)
+        except InputError as exc:
+            return str(exc)
+        return ""
+
+    @app.callback(
+        Output("result-store", "data"),
+        Output("run-errors", "data"),
+        Output("run-error", "children"),
+        Output("run-status", "children"),
+        Input("run-button", "n_clicks"),
+        State("case-store", "data"),
+        State({"type": "main-input", "path": ALL}, "value"),
+        State({"type": "main-input", "path": ALL}, "id"),
+        prevent_initial_call=True,
+        running=[(Output("run-button", "disabled"), True, False)],
+    )
+    def run(n_clicks, case_data, values, ids):
+        keep = "The results shown are those of the last successful run."
+        if not case_data:
+            return no_update, no_update, "Load a case first.", f"Run {n_clicks} not done."
+        paths = [i["path"] for i in ids]
+        source = case_data["source"]
+        started = time.perf_counter()
+        try:
+            raw = apply_edits(
+                yaml.safe_load(case_data["yaml"]), dict(zip(paths, values, strict=True))
+            )
+            result = store.run(raw, source=source)
+        except InputError as exc:
+            path = field_of_error(exc, paths)
+            errors = {path: str(exc)} if path else {}
+            message = "" if path else str(exc)
+            where = "see the field marked" if path else "see above"
+            status = f"Run {n_clicks} not done: {where}. {keep}"
+            return no_update, {"n": n_clicks, "errors": errors}, message, status
+        except ConvergenceError as exc:
+            status = f"Run {n_clicks} failed. {keep}"
+            return no_update, {"n": n_clicks, "errors": {}}, f"solver failed: {exc}", status
+        except Exception as exc:  # a bug, not the user's: the app goes on
+            log.exception("run failed")
+            text = f"internal error: {type(exc).__name__}: {exc}"
+            return no_update, {"n": n_clicks, "errors": {}}, text, f"Run {n_clicks} failed. {keep}"
+        data = result.to_json()
+        data["case_yaml"] = _dump(raw)
+        seconds = time.perf_counter() - started
+        status = f"Run {n_clicks} finished in {seconds:.1f} s: {result.name}"
+        return data, {"n": n_clicks, "errors": {}}, "", status
+
+    @app.callback(Output("results", "children"), Input("result-store", "data"))
+    def show(result):
+        if not result:
+            return no_update
+        raw = yaml.safe_load(result.get("case_yaml") or "{}")
+        figures = []
+        for name, profiles in result["profiles"].items():
+            title = result["name"] if len(result["profiles"]) == 1 else f"{result['name']} ({name})"
+            figures.append(
+                dcc.Graph(
+                    id=f"temperature-graph-{name}",
+                    figure=temperature_figure(profiles, title, raw),
+                    config={"displaylogo": False},
+                )
+            )
+            comp = composition_figure(profiles, title)
+            if comp is not None:
+                figures.append(dcc.Graph(figure=comp, config={"displaylogo": False}))
+        return results_view(result, outlet_temperature(result["summary"]), figures)

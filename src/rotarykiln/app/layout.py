@@ -1,0 +1,216 @@
+"""The page: a case panel (pick or upload a case, edit its main inputs, run) beside the results
+(outlet temperature, key figures, profiles, downloads, the run's figures).
+
+Element ids are part of the app's interface: the browser tests find them (``outlet-temperature``
+carries the solver's value in ``data-kelvin``).
+"""
+
+from __future__ import annotations
+
+from dash import dcc, html
+
+from rotarykiln import __version__
+from rotarykiln.app.inputs import MainInput
+from rotarykiln.app.summary import KEY_FIGURES, format_kelvin, summary_rows
+
+__all__ = ["input_rows", "page", "results_view"]
+
+DEFAULT_CASE = "tscheng_A16"
+
+
+def page(cases: list[str]) -> html.Div:
+    """The whole page, with ``cases`` offered in the built-in case picker."""
+    default = DEFAULT_CASE if DEFAULT_CASE in cases else (cases[0] if cases else None)
+    return html.Div(
+        className="page",
+        children=[
+            html.Header(
+                className="top",
+                children=[
+                    html.H1("rotarykiln"),
+                    html.Span(f"interactive kiln runs · version {__version__}", className="muted"),
+                ],
+            ),
+            html.Div(className="columns", children=[_case_panel(cases, default), _results()]),
+            dcc.Store(id="case-store"),
+            dcc.Store(id="result-store"),
+            dcc.Store(id="run-errors", data={"n": 0, "errors": {}}),
+        ],
+    )
+
+
+def _case_panel(cases: list[str], default: str | None) -> html.Div:
+    return html.Div(
+        className="panel inputs-panel",
+        children=[
+            html.H2("Case"),
+            html.Label("Built-in case", htmlFor="case-picker", className="field-label"),
+            dcc.Dropdown(
+                id="case-picker",
+                options=[{"label": c, "value": c} for c in cases],
+                value=default,
+                clearable=False,
+                searchable=True,
+            ),
+            dcc.Upload(
+                id="case-upload",
+                className="upload",
+                children=html.Div(["or drop a YAML case file here, or ", html.A("choose one")]),
+                multiple=False,
+            ),
+            html.Div(id="upload-error", className="error"),
+            html.Div(id="case-info", className="case-info"),
+            html.Div(id="case-error", className="error"),
+            html.H2("Main inputs"),
+            html.P(
+                'Values take units: "1.5 rpm", "62 kg/h", "2 deg", "535 K". '
+                "Other entries of the case file are kept as they are.",
+                className="muted small",
+            ),
+            html.Div(id="inputs"),
+            html.Button("Run", id="run-button", className="run-button", n_clicks=0),
+            html.Div(id="run-error", className="error"),
+            html.Div(id="run-status", className="muted small"),
+            html.Details(
+                [html.Summary("Case file (YAML)"), html.Pre(id="case-yaml", className="yaml")],
+                className="case-file",
+            ),
+        ],
+    )
+
+
+def input_rows(items: list[tuple[MainInput, str]], errors: dict[str, str]) -> list:
+    """A labelled text field for each main input, with the place of its error message."""
+    rows = []
+    for item, text in items:
+        rows.append(
+            html.Div(
+                className="input-row",
+                children=[
+                    html.Label(
+                        [item.label, html.Span(item.path, className="path")],
+                        className="field-label",
+                    ),
+                    dcc.Input(
+                        id={"type": "main-input", "path": item.path},
+                        value=text,
+                        type="text",
+                        debounce=True,
+                        className="text-input",
+                        spellCheck=False,
+                        autoComplete="off",
+                    ),
+                    html.Div(
+                        errors.get(item.path, ""),
+                        id={"type": "input-error", "path": item.path},
+                        className="error field-error",
+                    ),
+                ],
+            )
+        )
+    if not rows:
+        rows.append(html.P("This case has none of the main inputs.", className="muted"))
+    return rows
+
+
+def _results() -> html.Div:
+    placeholder = html.P("Pick a case, change an input and press Run.", className="muted")
+    return html.Div(
+        className="panel results-panel",
+        children=[
+            dcc.Loading(
+                type="default",
+                delay_show=200,
+                children=html.Div(id="results", children=placeholder),
+            )
+        ],
+    )
+
+
+def _table(rows: list[tuple[str, str, str]], class_name: str) -> html.Table:
+    return html.Table(
+        className=class_name,
+        children=[
+            html.Tbody(
+                [
+                    html.Tr([html.Th(label), html.Td(value, className="num"), html.Td(unit)])
+                    for label, value, unit in rows
+                ]
+            )
+        ],
+    )
+
+
+def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) -> list:
+    """The results panel of one run (``result``: :meth:`RunResult.to_json`)."""
+    run_id = result["run_id"]
+    summary = result["summary"]
+    if outlet is not None:
+        key, kelvin = outlet
+        headline = html.Div(
+            className="headline",
+            children=[
+                html.Div("Bed outlet temperature", className="headline-label"),
+                html.Div(
+                    format_kelvin(kelvin),
+                    id="outlet-temperature",
+                    className="headline-value",
+                    **{"data-kelvin": repr(kelvin), "data-key": key},
+                ),
+            ],
+        )
+    else:
+        headline = html.Div(
+            "This case has no heat model: no outlet temperature.",
+            id="outlet-temperature",
+            className="headline muted",
+        )
+    links = (
+        [
+            html.A(
+                "Open the report",
+                href=f"/files/{run_id}/report.html",
+                target="_blank",
+                className="report-link",
+                id="report-link",
+            )
+        ]
+        if "report.html" in result["files"]
+        else []
+    )
+    downloads = html.Ul(
+        [
+            html.Li(html.A(name, href=f"/files/{run_id}/{name}?download=1", download=name))
+            for name in result["files"]
+        ],
+        id="downloads",
+        className="downloads",
+    )
+    warnings = (
+        html.Div(
+            [html.H3("Warnings")] + [html.P(w, className="warning") for w in result["warnings"]],
+            id="run-warnings",
+        )
+        if result["warnings"]
+        else html.Div(id="run-warnings")
+    )
+    images = [
+        html.Img(src=f"/files/{run_id}/{name}", alt=name, className="run-figure")
+        for name in result["files"]
+        if name.endswith(".png")
+    ]
+    return [
+        html.H2(result["name"], id="result-title"),
+        headline,
+        _table(summary_rows(summary, KEY_FIGURES), "key-figures"),
+        warnings,
+        *figures,
+        html.H3("Downloads"),
+        html.Div(links),
+        downloads,
+        html.Details(
+            [html.Summary("All summary values"), _table(summary_rows(summary), "summary-table")],
+            className="all-summary",
+        ),
+        html.Details([html.Summary("Figures of the run"), *images], className="run-figures"),
+    ]

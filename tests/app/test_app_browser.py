@@ -1,0 +1,187 @@
+"""The app end to end in headless Chromium: load, edit an input, run, compare the displayed
+outlet temperature with the solver's; bad input shown next to its field, results kept."""
+
+from __future__ import annotations
+
+import re
+import urllib.request
+
+import pytest
+import yaml
+
+from rotarykiln.case import parse_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.errors import InputError
+
+CASE = "tscheng_A16"
+WAIT = 45  # s; a run of the case takes about 4 s
+
+
+def _raw() -> dict:
+    return yaml.safe_load(builtin_case_path(CASE).read_text(encoding="utf-8"))
+
+
+def _solver_outlet(raw: dict) -> float:
+    """The bed outlet temperature (K) of the kiln model, straight from the solver."""
+    from rotarykiln.kiln.build import kiln_from_case
+    from rotarykiln.kiln.solve import solve_kiln
+
+    kiln, cells = kiln_from_case(parse_case(raw))
+    return solve_kiln(kiln, cells).bed_outlet_temperature
+
+
+def _by(driver, css):
+    from selenium.webdriver.common.by import By
+
+    return driver.find_element(By.CSS_SELECTOR, css)
+
+
+def _wait(driver, condition, timeout=WAIT):
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    return WebDriverWait(driver, timeout, poll_frequency=0.1).until(condition)
+
+
+def _field(driver, path: str):
+    return _wait(
+        driver,
+        lambda d: d.find_element("css selector", f'input[id*=\'"path":"{path}"\']'),
+    )
+
+
+def _field_error(driver, path: str) -> str:
+    return driver.find_element("css selector", f'div[id*=\'"path":"{path}"\'].error').text
+
+
+def _type(driver, path: str, text: str) -> None:
+    """Replace a field's text and leave it (the app reads a field when it loses focus)."""
+    from selenium.webdriver.common.keys import Keys
+
+    field = _field(driver, path)
+    field.send_keys(Keys.CONTROL, "a")
+    field.send_keys(Keys.DELETE)
+    field.send_keys(text, Keys.TAB)
+    _wait(driver, lambda d: _field(d, path).get_attribute("value") == text)
+
+
+def _status(driver) -> str:
+    return _by(driver, "#run-status").text
+
+
+def _run(driver, expect_ok: bool = True) -> str:
+    """Press Run and wait for its status line; return it."""
+    before = _status(driver)
+    _by(driver, "#run-button").click()
+    _wait(driver, lambda d: _status(d) and _status(d) != before)
+    status = _status(driver)
+    if expect_ok:
+        assert "finished" in status, status + " / " + _by(driver, "#run-error").text
+    return status
+
+
+def _open(driver, server) -> None:
+    driver.get(server.url)
+    _field(driver, "operation.speed")
+    _wait(driver, lambda d: _field(d, "operation.speed").get_attribute("value"))
+
+
+def test_displayed_outlet_temperature_is_the_solvers(browser, app_server, screenshot):
+    _open(browser, app_server)
+    assert _by(browser, "#case-info").text == f"Loaded: {CASE} (built-in)"
+    assert _field(browser, "operation.speed").get_attribute("value") == "1.5 rpm"
+    _type(browser, "operation.speed", "2.5 rpm")
+    _run(browser)
+
+    raw = _raw()
+    raw["operation"]["speed"] = "2.5 rpm"
+    expected = _solver_outlet(raw)
+    assert abs(expected - _solver_outlet(_raw())) > 0.5  # the edit changes the answer
+
+    shown = _wait(browser, lambda d: d.find_element("id", "outlet-temperature"))
+    kelvin = float(shown.get_attribute("data-kelvin"))
+    assert kelvin == pytest.approx(expected, rel=1e-9, abs=1e-9)
+    text = shown.text
+    assert text.startswith(f"{expected:.1f} K"), (text, expected)
+    displayed = float(re.match(r"([0-9.]+) K", text).group(1))
+    assert abs(displayed - expected) <= 0.05 + 1e-9
+    screenshot(browser, "app_after_run.png")
+
+    # the downloads: the case as run (with units), the tables, the report
+    links = {
+        a.text: a.get_attribute("href")
+        for a in browser.find_elements("css selector", "#downloads a")
+    }
+    assert {"case.yaml", "report.html", "summary.json"} <= set(links), links
+    assert any(name.endswith("_profiles.csv") for name in links), links
+    with urllib.request.urlopen(links["case.yaml"], timeout=10) as response:
+        case_text = response.read().decode()
+    assert "speed: 2.5 rpm" in case_text
+    assert parse_case(yaml.safe_load(case_text)) == parse_case(raw)
+    with urllib.request.urlopen(links["report.html"], timeout=10) as response:
+        assert f"{expected:.6g}"[:5] in response.read().decode()
+
+
+def _upload(driver, path) -> None:
+    _by(driver, "#case-upload input[type=file]").send_keys(str(path))
+
+
+def test_bad_input_is_shown_next_to_its_field_and_results_stay(
+    browser, app_server, screenshot, tmp_path
+):
+    _open(browser, app_server)
+    _run(browser)
+    outlet = _by(browser, "#outlet-temperature").text
+    assert re.match(r"[0-9.]+ K \(", outlet)
+
+    # a value without a unit: refused next to the field, as it is typed and on Run
+    _type(browser, "operation.speed", "3")
+    _wait(browser, lambda d: "no unit" in _field_error(d, "operation.speed"))
+    status = _run(browser, expect_ok=False)
+    assert "not done" in status, status
+    assert "operation.speed: 3 has no unit" in _field_error(browser, "operation.speed")
+    assert _by(browser, "#outlet-temperature").text == outlet  # nothing computed is lost
+    _type(browser, "operation.speed", "1.5 rpm")
+    _wait(browser, lambda d: _field_error(d, "operation.speed") == "")
+
+    # a value the case refuses: the CLI's one-line message, next to the field
+    _type(browser, "kiln.diameter", "-0.4 m")
+    raw = _raw()
+    raw["kiln"]["diameter"] = "-0.4 m"
+    with pytest.raises(InputError) as cli_error:
+        parse_case(raw, source=CASE)
+    _run(browser, expect_ok=False)
+    _wait(browser, lambda d: _field_error(d, "kiln.diameter") == str(cli_error.value))
+    assert _by(browser, "#outlet-temperature").text == outlet
+    screenshot(browser, "app_field_error.png")
+
+    # an upload that is not YAML: refused next to the upload; the loaded case stays
+    junk = tmp_path / "notes.yaml"
+    junk.write_text("kiln: [unclosed\n  speed: {\n", encoding="utf-8")
+    _upload(browser, junk)
+    _wait(browser, lambda d: "notes.yaml: malformed YAML" in _by(d, "#upload-error").text)
+    assert _field(browser, "kiln.diameter").get_attribute("value") == "-0.4 m"
+    assert _by(browser, "#outlet-temperature").text == outlet
+    binary = tmp_path / "photo.png"
+    binary.write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00\xff\xfe")
+    _upload(browser, binary)
+    _wait(browser, lambda d: "photo.png: not UTF-8" in _by(d, "#upload-error").text)
+    screenshot(browser, "app_upload_error.png")
+
+    # an uploaded case with an error: loaded, its error next to the field
+    bad = _raw()
+    bad["operation"]["feed"] = "-5 kg/h"
+    with pytest.raises(InputError) as feed_error:
+        parse_case(bad, source="bad_feed.yaml")
+    path = tmp_path / "bad_feed.yaml"
+    path.write_text(yaml.safe_dump(bad, sort_keys=False), encoding="utf-8")
+    _upload(browser, path)
+    _wait(browser, lambda d: _by(d, "#case-info").text == "Loaded: bad_feed.yaml (uploaded)")
+    assert _by(browser, "#upload-error").text == ""
+    _wait(browser, lambda d: _field_error(d, "operation.feed") == str(feed_error.value))
+    assert _by(browser, "#outlet-temperature").text == outlet
+
+    # fixed in the app, it runs: the app kept going through all of the above
+    _type(browser, "operation.feed", "14.2 kg/h")
+    _run(browser)
+    assert _field_error(browser, "operation.feed") == ""
+    assert _by(browser, "#outlet-temperature").text == outlet  # the same inputs as the first run
