@@ -49,6 +49,7 @@ def register_callbacks(app, store: RunStore) -> None:
         Output("upload-error", "children"),
         Output("case-error", "children"),
         Output("case-info", "children"),
+        Output("case-description", "children"),
         Output("case-yaml", "children"),
         Output("case-picker", "value"),
         Input("case-picker", "value"),
@@ -60,15 +61,15 @@ def register_callbacks(app, store: RunStore) -> None:
             try:
                 raw = load_upload(contents, filename)
             except InputError as exc:  # nothing else changes: the loaded case stays
-                return (no_update,) * 2 + (str(exc),) + (no_update,) * 4
+                return (no_update,) * 2 + (str(exc),) + (no_update,) * 5
             source, info, picker = str(filename), f"Loaded: {filename} (uploaded)", None
         else:
             if not name:
-                return (no_update,) * 7
+                return (no_update,) * 8
             try:
                 raw = load_builtin(name)
             except InputError as exc:
-                return (no_update,) * 2 + (str(exc),) + (no_update,) * 4
+                return (no_update,) * 2 + (str(exc),) + (no_update,) * 5
             source, info, picker = name, f"Loaded: {name} (built-in)", no_update
         items = present_inputs(raw)
         field_errors, case_error = _validate(raw, source, [i.path for i, _ in items])
@@ -81,6 +82,7 @@ def register_callbacks(app, store: RunStore) -> None:
             "",
             case_error,
             info,
+            str(raw.get("description") or ""),
             data["yaml"],
             picker,
         )
@@ -111,10 +113,11 @@ def register_callbacks(app, store: RunStore) -> None:
         State("case-store", "data"),
         State({"type": "main-input", "path": ALL}, "value"),
         State({"type": "main-input", "path": ALL}, "id"),
+        State("result-store", "data"),
         prevent_initial_call=True,
         running=[(Output("run-button", "disabled"), True, False)],
     )
-    def run(n_clicks, case_data, values, ids):
+    def run(n_clicks, case_data, values, ids, previous):
         keep = "The results shown are those of the last successful run."
         if not case_data:
             return no_update, no_update, "Load a case first.", f"Run {n_clicks} not done."
@@ -142,9 +145,28 @@ def register_callbacks(app, store: RunStore) -> None:
             return no_update, {"n": n_clicks, "errors": {}}, text, f"Run {n_clicks} failed. {keep}"
         data = result.to_json()
         data["case_yaml"] = _dump(raw)
+        data["inputs"] = {"source": source, **dict(zip(paths, values, strict=True))}
+        before = outlet_temperature((previous or {}).get("summary") or {})
+        data["previous_outlet"] = before[1] if before else None
         seconds = time.perf_counter() - started
         status = f"Run {n_clicks} finished in {seconds:.1f} s: {result.name}"
         return data, {"n": n_clicks, "errors": {}}, "", status
+
+    @app.callback(
+        Output("stale-note", "children"),
+        Input({"type": "main-input", "path": ALL}, "value"),
+        Input({"type": "main-input", "path": ALL}, "id"),
+        Input("result-store", "data"),
+        State("case-store", "data"),
+    )
+    def stale(values, ids, result, case_data):
+        if not result or not case_data:
+            return ""
+        now = {"source": case_data["source"]}
+        now.update({i["path"]: v for i, v in zip(ids, values, strict=True)})
+        if now == result.get("inputs"):
+            return ""
+        return "The inputs have changed since these results: press Run to update them."
 
     @app.callback(Output("results", "children"), Input("result-store", "data"))
     def show(result):

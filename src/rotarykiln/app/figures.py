@@ -18,9 +18,10 @@ COLOURS = {
     "bed": "#8c564b",
     "gas": "#d62728",
     "wall": "#9467bd",
-    "shell": "#7f7f7f",
+    "shell": "#1f77b4",
     "gas_wall": "#ff7f0e",
 }
+SYMBOLS = {"gas": "circle-open", "bed": "square-open", "wall": "triangle-up-open"}
 NAMES = {
     "bed": "bed",
     "gas": "gas",
@@ -97,7 +98,11 @@ def temperature_figure(profiles: dict[str, list], title: str, raw: Any = None) -
                 y=values,
                 mode="lines",
                 name=f"{NAMES.get(name, name)}",
-                line={"color": COLOURS.get(name), "width": 2.5},
+                line={
+                    "color": COLOURS.get(name),
+                    "width": 2.5,
+                    "dash": "dash" if name == "shell" else "solid",
+                },
                 hovertemplate="%{y:.1f} K",
             )
         )
@@ -108,7 +113,11 @@ def temperature_figure(profiles: dict[str, list], title: str, raw: Any = None) -
                 y=tm,
                 mode="markers",
                 name=f"{NAMES.get(name, name)}, measured",
-                marker={"color": COLOURS.get(name, "#333"), "size": 9, "symbol": "circle-open"},
+                marker={
+                    "color": COLOURS.get(name, "#333"),
+                    "size": 9,
+                    "symbol": SYMBOLS.get(name, "diamond-open"),
+                },
                 marker_line_width=2,
                 hovertemplate="%{y:.1f} K (measured)",
             )

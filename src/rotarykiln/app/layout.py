@@ -11,7 +11,7 @@ from dash import dcc, html
 
 from rotarykiln import __version__
 from rotarykiln.app.inputs import MainInput
-from rotarykiln.app.summary import KEY_FIGURES, format_kelvin, summary_rows
+from rotarykiln.app.summary import format_kelvin, key_figures, summary_rows
 
 __all__ = ["input_rows", "page", "results_view"]
 
@@ -60,6 +60,7 @@ def _case_panel(cases: list[str], default: str | None) -> html.Div:
             ),
             html.Div(id="upload-error", className="error"),
             html.Div(id="case-info", className="case-info"),
+            html.Div(id="case-description", className="muted small"),
             html.Div(id="case-error", className="error"),
             html.H2("Main inputs"),
             html.P(
@@ -68,9 +69,14 @@ def _case_panel(cases: list[str], default: str | None) -> html.Div:
                 className="muted small",
             ),
             html.Div(id="inputs"),
-            html.Button("Run", id="run-button", className="run-button", n_clicks=0),
-            html.Div(id="run-error", className="error"),
-            html.Div(id="run-status", className="muted small"),
+            html.Div(
+                className="run-bar",
+                children=[
+                    html.Button("Run", id="run-button", className="run-button", n_clicks=0),
+                    html.Div(id="run-error", className="error"),
+                    html.Div(id="run-status", className="muted small"),
+                ],
+            ),
             html.Details(
                 [html.Summary("Case file (YAML)"), html.Pre(id="case-yaml", className="yaml")],
                 className="case-file",
@@ -88,8 +94,11 @@ def input_rows(items: list[tuple[MainInput, str]], errors: dict[str, str]) -> li
                 className="input-row",
                 children=[
                     html.Label(
-                        [item.label, html.Span(item.path, className="path")],
-                        className="field-label",
+                        [
+                            html.Span(item.label),
+                            html.Span(item.path, className="path", title=item.path),
+                        ],
+                        className="field-label input-label",
                     ),
                     dcc.Input(
                         id={"type": "main-input", "path": item.path},
@@ -118,12 +127,25 @@ def _results() -> html.Div:
     return html.Div(
         className="panel results-panel",
         children=[
+            html.Div(id="stale-note", className="stale"),
             dcc.Loading(
                 type="default",
                 delay_show=200,
                 children=html.Div(id="results", children=placeholder),
-            )
+            ),
         ],
+    )
+
+
+def _previous(previous: float | None, kelvin: float) -> html.Div:
+    """The change from the previous run's outlet temperature."""
+    if previous is None:
+        return html.Div(id="outlet-change")
+    change = kelvin - previous
+    return html.Div(
+        f"{change:+.1f} K from the previous run ({previous:.1f} K)",
+        id="outlet-change",
+        className="muted",
     )
 
 
@@ -157,6 +179,7 @@ def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) 
                     className="headline-value",
                     **{"data-kelvin": repr(kelvin), "data-key": key},
                 ),
+                _previous(result.get("previous_outlet"), kelvin),
             ],
         )
     else:
@@ -202,7 +225,7 @@ def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) 
     return [
         html.H2(result["name"], id="result-title"),
         headline,
-        _table(summary_rows(summary, KEY_FIGURES), "key-figures"),
+        _table(key_figures(summary), "key-figures"),
         warnings,
         *figures,
         html.H3("Downloads"),
@@ -212,5 +235,9 @@ def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) 
             [html.Summary("All summary values"), _table(summary_rows(summary), "summary-table")],
             className="all-summary",
         ),
-        html.Details([html.Summary("Figures of the run"), *images], className="run-figures"),
+        html.Details(
+            [html.Summary("Figures of the run"), *images],
+            className="run-figures",
+            open=not figures,  # the only figures when there is no profile to draw
+        ),
     ]

@@ -10,15 +10,26 @@ body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", "DejaVu San
 .page { max-width: 1400px; margin: 0 auto; padding: 0 16px 32px; }
 .top { display: flex; align-items: baseline; gap: 16px; padding: 14px 0 10px; }
 .top h1 { margin: 0; font-size: 24px; color: #6b3d2e; }
+.inputs-panel { position: sticky; top: 8px; max-height: calc(100vh - 64px); overflow-y: auto;
+                padding-bottom: 0; }
+.run-bar { position: sticky; bottom: 0; z-index: 10; background: #fff; padding: 4px 0 12px;
+           border-top: 1px solid #eceef1; margin-top: 12px; }
+.stale:not(:empty) { background: #eef4fb; border-left: 3px solid #1a5fb4; padding: 6px 10px;
+                     font-size: 14px; margin-bottom: 8px; }
 .columns { display: grid; grid-template-columns: minmax(300px, 380px) 1fr; gap: 16px;
            align-items: start; }
-@media (max-width: 900px) { .columns { grid-template-columns: 1fr; } }
+@media (max-width: 900px) { .columns { grid-template-columns: 1fr; }
+                            .inputs-panel { position: static; max-height: none; } }
 .panel { background: #fff; border: 1px solid #d8dbe0; border-radius: 8px; padding: 14px 18px; }
 .panel h2 { font-size: 17px; margin: 8px 0 8px; }
 .panel h3 { font-size: 15px; margin: 18px 0 6px; }
 .muted { color: #5f6670; }
 .small { font-size: 13px; }
 .field-label { display: block; font-size: 14px; font-weight: 600; margin: 10px 0 3px; }
+.input-label { display: flex; justify-content: space-between; align-items: baseline;
+               gap: 8px; }
+.input-label .path { overflow: hidden; text-overflow: ellipsis; white-space: nowrap;
+                     min-width: 0; }
 .path { font-weight: 400; font-family: ui-monospace, "DejaVu Sans Mono", monospace;
         font-size: 11.5px; color: #7a808a; margin-left: 8px; }
 .text-input { width: 100%; box-sizing: border-box; padding: 6px 8px; font-size: 15px;
@@ -34,7 +45,7 @@ body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", "DejaVu San
 .field-error:not(:empty) { background: #fdecee; border-left: 3px solid #b00020;
                            padding: 3px 6px; }
 .input-row:has(.field-error:not(:empty)) .text-input { border-color: #b00020; }
-.run-button { margin-top: 16px; width: 100%; padding: 9px; font-size: 16px; font-weight: 600;
+.run-button { margin-top: 8px; width: 100%; padding: 9px; font-size: 16px; font-weight: 600;
               color: #fff; background: #8c564b; border: none; border-radius: 6px;
               cursor: pointer; }
 .run-button:hover { background: #6b3d2e; }

@@ -7,7 +7,14 @@ import math
 import re
 from typing import Any
 
-__all__ = ["KEY_FIGURES", "format_kelvin", "format_value", "split_unit", "summary_rows"]
+__all__ = [
+    "KEY_FIGURES",
+    "format_kelvin",
+    "format_value",
+    "key_figures",
+    "split_unit",
+    "summary_rows",
+]
 
 _UNITS = (
     ("_W_per_m", "W/m"),
@@ -24,17 +31,19 @@ _UNITS = (
     ("_m", "m"),
 )
 
-KEY_FIGURES = (
-    "gas_outlet_temperature_K",
-    "bed_max_temperature_K",
-    "residence_time_s",
-    "heat_to_solids_W",
-    "shell_loss_W",
-    "thermal_efficiency",
-    "regime",
-    "fill",
-)
-"""Summary entries shown beside the outlet temperature (matched at the end of the key)."""
+KEY_FIGURES = {
+    "gas_outlet_temperature_K": "Gas outlet temperature",
+    "bed_max_temperature_K": "Bed maximum temperature",
+    "residence_time_s": "Residence time",
+    "heat_to_solids_W": "Heat to the solids",
+    "shell_loss_W": "Shell loss",
+    "thermal_efficiency": "Thermal efficiency",
+    "energy_balance_closure": "Energy balance closure",
+    "regime": "Bed regime",
+    "fill": "Fill fraction",
+}
+"""Summary entries shown beside the outlet temperature (matched at the end of the key, the
+first key that matches), with their labels."""
 
 
 def split_unit(key: str) -> tuple[str, str]:
@@ -81,20 +90,37 @@ def format_value(value: Any, unit: str = "") -> str:
     return str(value)
 
 
-def summary_rows(summary: dict, keys: tuple[str, ...] | None = None) -> list[tuple[str, str, str]]:
-    """(label, value, unit) rows of a summary: every entry but the name, or those whose key ends
-    with one of ``keys``, in the order of ``keys``."""
-    if keys is None:
-        chosen = [k for k in summary if k != "name"]
-    else:
-        chosen = []
-        for end in keys:
-            for k in summary:
-                if re.search(rf"(^|_){re.escape(end)}$", k) and k not in chosen:
-                    chosen.append(k)
-                    break
+def summary_rows(summary: dict) -> list[tuple[str, str, str]]:
+    """(label, value, unit) rows of every summary entry but the name."""
     rows = []
-    for key in chosen:
-        label, unit = split_unit(key)
-        rows.append((label, format_value(summary[key], unit), unit))
+    for key, value in summary.items():
+        if key != "name":
+            label, unit = split_unit(key)
+            rows.append((label, format_value(value, unit), unit))
+    return rows
+
+
+def key_figures(summary: dict) -> list[tuple[str, str, str]]:
+    """(label, value, unit) rows of the :data:`KEY_FIGURES` a summary has, in readable units.
+
+    >>> key_figures({"heat_residence_time_s": 4842.3, "heat_thermal_efficiency": 0.4936})
+    [('Residence time', '80.7', 'min'), ('Thermal efficiency', '49.4', '%')]
+    """
+    rows = []
+    for end, label in KEY_FIGURES.items():
+        key = next((k for k in summary if re.search(rf"(^|_){re.escape(end)}$", k)), None)
+        if key is None or summary[key] is None:
+            continue
+        value, unit = summary[key], split_unit(key)[1]
+        if isinstance(value, float) and math.isfinite(value):
+            if unit == "s" and value >= 120:
+                value, unit = value / 60, "min"
+            elif unit == "W" and abs(value) >= 1e4:
+                value, unit = value / 1e3, "kW"
+            elif end == "thermal_efficiency":
+                value, unit = 100 * value, "%"
+            if unit in ("K", "min", "%", "kW"):
+                rows.append((label, f"{value:.1f}", unit))
+                continue
+        rows.append((label, format_value(value, unit), unit))
     return rows
