@@ -32,7 +32,8 @@ __all__ = [
 @dataclass(frozen=True)
 class MainInput:
     """One editable input: its dotted ``path`` in the case file, a ``label`` and the quantity
-    ``kinds`` it accepts (keys of :data:`rotarykiln.units.KINDS`; ``fraction``: a bare number)."""
+    ``kinds`` it accepts (keys of :data:`rotarykiln.units.KINDS`; ``fraction``: a bare number;
+    ``gas flow``: a mass, volumetric or normal flow, read by the case itself)."""
 
     path: str
     label: str
@@ -52,25 +53,25 @@ MAIN_INPUTS: tuple[MainInput, ...] = (
     _row("bed.fill", "Fill fraction", "fraction"),
     _row("material.bulk_density", "Bulk density", "density"),
     # the one case schema: gas, burner and wall as top-level sections
-    _row("gas.flow", "Gas flow", "mass flow", "volumetric flow"),
+    _row("gas.flow", "Gas flow", "gas flow"),
     _row("gas.temperature", "Gas inlet temperature", "temperature"),
-    _row("burner.fuel_flow", "Fuel flow", "mass flow", "volumetric flow"),
-    _row("burner.primary_air.flow", "Primary air flow", "mass flow", "volumetric flow"),
-    _row("burner.secondary_air.flow", "Secondary air flow", "mass flow", "volumetric flow"),
+    _row("burner.fuel_flow", "Fuel flow", "gas flow"),
+    _row("burner.primary_air.flow", "Primary air flow", "gas flow"),
+    _row("burner.secondary_air.flow", "Secondary air flow", "gas flow"),
     _row("wall.U", "Wall loss coefficient", "heat transfer coefficient"),
     _row("wall.ambient_temperature", "Ambient temperature", "temperature"),
     # the schema before it (heat: and chemistry: sub-sections)
     _row("heat.solid_inlet_temperature", "Solids inlet temperature", "temperature"),
-    _row("heat.gas.flow", "Gas flow", "mass flow", "volumetric flow"),
+    _row("heat.gas.flow", "Gas flow", "gas flow"),
     _row("heat.gas.inlet_temperature", "Gas inlet temperature", "temperature"),
-    _row("heat.burner.fuel_flow", "Fuel flow", "mass flow", "volumetric flow"),
-    _row("heat.burner.primary_air.flow", "Primary air flow", "mass flow", "volumetric flow"),
-    _row("heat.burner.secondary_air.flow", "Secondary air flow", "mass flow", "volumetric flow"),
+    _row("heat.burner.fuel_flow", "Fuel flow", "gas flow"),
+    _row("heat.burner.primary_air.flow", "Primary air flow", "gas flow"),
+    _row("heat.burner.secondary_air.flow", "Secondary air flow", "gas flow"),
     _row("heat.ambient_temperature", "Ambient temperature", "temperature"),
     _row("chemistry.feed.temperature", "Solids inlet temperature", "temperature"),
-    _row("chemistry.gas.inlet_flow", "Gas flow", "mass flow", "volumetric flow"),
+    _row("chemistry.gas.inlet_flow", "Gas flow", "gas flow"),
     _row("chemistry.gas.inlet_temperature", "Gas inlet temperature", "temperature"),
-    _row("chemistry.burner.fuel_flow", "Fuel flow", "mass flow", "volumetric flow"),
+    _row("chemistry.burner.fuel_flow", "Fuel flow", "gas flow"),
     _row("chemistry.wall_loss.U", "Wall loss coefficient", "heat transfer coefficient"),
 )
 """The inputs the app shows, in this order, when the loaded case has them."""
@@ -168,6 +169,8 @@ def check_value(path: str, text: Any) -> str | float:
         raise InputError(
             path, message=f"{path}: {text} has no unit (write it with one: {_expected(item)})"
         )
+    if any(kind in _CASE_READS for kind in item.kinds):
+        return text  # the case reads it when the run validates it
     first = None
     for kind in item.kinds:
         try:
@@ -178,8 +181,12 @@ def check_value(path: str, text: Any) -> str | float:
     raise first
 
 
+_EXAMPLES = {**EXAMPLES, "gas flow": "kg/h, m3/h, Nm3/h, L/s"}
+_CASE_READS = ("gas flow",)  # kinds whose text only the case reads (normal volumes...)
+
+
 def _expected(item: MainInput) -> str:
-    return " or ".join(EXAMPLES.get(k, k) for k in item.kinds)
+    return " or ".join(_EXAMPLES.get(k, k) for k in item.kinds)
 
 
 def apply_edits(raw: dict, values: dict[str, Any]) -> dict:

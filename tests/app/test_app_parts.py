@@ -1,0 +1,128 @@
+"""The app's parts without a browser: main inputs, edits, uploads, runs and the file route."""
+
+from __future__ import annotations
+
+import base64
+
+import pytest
+
+from rotarykiln.app.inputs import apply_edits, check_value, field_of_error, present_inputs
+from rotarykiln.app.loading import builtin_cases, load_builtin, load_upload
+from rotarykiln.case import parse_case
+from rotarykiln.errors import InputError
+
+
+def _data_url(data: bytes) -> str:
+    return "data:application/x-yaml;base64," + base64.b64encode(data).decode()
+
+
+@pytest.mark.parametrize("name", builtin_cases())
+def test_every_builtin_case_shows_its_main_inputs_and_reads_back(name):
+    raw = load_builtin(name)
+    items = present_inputs(raw)
+    assert [i.path for i, _ in items][:2] == ["kiln.length", "kiln.diameter"]
+    edited = apply_edits(raw, {i.path: text for i, text in items})  # unchanged texts
+    assert parse_case(edited) == parse_case(raw)
+
+
+def test_an_edit_changes_only_its_field():
+    raw = load_builtin("tscheng_A16")
+    edited = apply_edits(raw, {"operation.speed": "3 rpm", "bed.fill": "0.2"})
+    assert edited["operation"]["speed"] == "3 rpm" and edited["bed"]["fill"] == 0.2
+    assert raw["operation"]["speed"] == "1.5 rpm"  # the loaded case is not touched
+    assert {k: v for k, v in edited.items() if k not in ("operation", "bed")} == {
+        k: v for k, v in raw.items() if k not in ("operation", "bed")
+    }
+
+
+@pytest.mark.parametrize(
+    ("path", "text", "message"),
+    [
+        ("operation.speed", "1.5", "operation.speed: 1.5 has no unit"),
+        ("kiln.length", "", "kiln.length: empty"),
+        ("operation.feed", "3 m", 'operation.feed: "3 m" is a length'),
+        ("kiln.slope", "2", "kiln.slope: 2 has no unit"),
+    ],
+)
+def test_a_bad_field_is_one_line_naming_it(path, text, message):
+    with pytest.raises(InputError) as err:
+        check_value(path, text)
+    assert str(err.value).startswith(message)
+    assert "\n" not in str(err.value)
+    assert field_of_error(err.value, [path]) == path
+
+
+def test_case_errors_land_on_their_field():
+    raw = apply_edits(load_builtin("tscheng_A16"), {"kiln.diameter": "-1 m"})
+    with pytest.raises(InputError) as err:
+        parse_case(raw)
+    assert field_of_error(err.value, ["kiln.length", "kiln.diameter"]) == "kiln.diameter"
+    assert field_of_error(err.value, ["kiln.length"]) is None
+
+
+@pytest.mark.parametrize(
+    ("data", "message"),
+    [
+        (b"kiln: [1, 2\n", "case.yaml: malformed YAML at line 2"),
+        (b"\xff\xfe\x00", "case.yaml: not UTF-8 text"),
+        (b"", "case.yaml: the case is empty"),
+        (b"- 1\n- 2\n", "case.yaml: not a case file"),
+        (b"just words", "case.yaml: not a case file"),
+    ],
+)
+def test_an_upload_that_is_not_a_case_is_refused_in_one_line(data, message):
+    with pytest.raises(InputError) as err:
+        load_upload(_data_url(data), "/home/someone/case.yaml")
+    assert str(err.value).startswith(message), str(err.value)
+    assert "/tmp" not in str(err.value) and "\n" not in str(err.value)
+
+
+def test_an_upload_too_large_or_broken_is_refused():
+    with pytest.raises(InputError, match="too large"):
+        load_upload(_data_url(b"#" * 1_100_000), "big.yaml")
+    with pytest.raises(InputError, match="could not be decoded"):
+        load_upload("data:text/plain;base64,@@@", "x.yaml")
+    with pytest.raises(InputError, match="empty upload"):
+        load_upload(None, None)
+
+
+def test_a_run_keeps_its_files_and_serves_only_them(tmp_path):
+    pytest.importorskip("dash")
+    from rotarykiln.app.running import RunStore
+    from rotarykiln.app.server import create_app
+
+    store = RunStore(tmp_path, keep=1)
+    result = store.run(load_builtin("tscheng_A16"), "tscheng_A16")
+    assert {"report.html", "case.yaml", "summary.json"} <= set(result.files)
+    assert result.files[0] == "report.html"
+    assert "heat" in result.profiles and "T_bed_K" in result.profiles["heat"]
+    client = create_app(store).server.test_client()
+    page = client.get(f"/files/{result.run_id}/report.html")
+    assert page.status_code == 200 and b"Tscheng" in page.data
+    download = client.get(f"/files/{result.run_id}/case.yaml?download=1")
+    assert "attachment" in download.headers["Content-Disposition"]
+    secret = tmp_path.parent / "secret.txt"
+    secret.write_text("not for the browser")
+    for bad in (
+        f"/files/{result.run_id}/..%2F..%2Fsecret.txt",
+        f"/files/{result.run_id}/../../secret.txt",
+        f"/files/{result.run_id}/nothing.csv",
+        "/files/0123/report.html",
+        "/files/" + "0" * 32 + "/report.html",
+    ):
+        served = client.get(bad)  # refused, or Dash's page for a path it does not know
+        assert served.status_code == 404 or b"react-entry-point" in served.data, bad
+        assert b"not for the browser" not in served.data
+    second = store.run(load_builtin("tscheng_A16"), "tscheng_A16")  # keep=1: the first goes
+    assert store.folder(result.run_id) is None and store.folder(second.run_id) is not None
+
+
+def test_a_run_with_a_bad_case_leaves_no_folder(tmp_path):
+    from rotarykiln.app.running import RunStore
+
+    store = RunStore(tmp_path)
+    raw = load_builtin("tscheng_A16")
+    raw["kiln"]["diameter"] = "0 m"
+    with pytest.raises(InputError):
+        store.run(raw)
+    assert list(tmp_path.iterdir()) == []
