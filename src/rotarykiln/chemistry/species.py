@@ -26,6 +26,7 @@ __all__ = [
     "SpeciesTable",
     "default_species",
     "check_mass_fractions",
+    "load_species",
 ]
 
 SPECIES_FILE = Path(__file__).with_name("species.yaml")
@@ -52,6 +53,9 @@ class Species:
         Mean specific heat, J/(kg K) (only used to shift reaction heats in temperature).
     h_f : float or None
         Standard formation enthalpy at 298.15 K, J/mol, when known.
+    thermo : SpeciesThermo or None
+        Temperature-dependent c_p (:mod:`rotarykiln.chemistry.thermo`) of a user species given
+        as NASA-7, Shomate or polynomial; ``cp`` is then its mean over 298.15-1000 K.
     """
 
     name: str
@@ -61,6 +65,7 @@ class Species:
     cp: float
     h_f: float | None = None
     description: str = ""
+    thermo: object | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)
@@ -159,36 +164,219 @@ def _molar_mass(name: str, elements: Mapping[str, float], masses: Mapping[str, f
     return total * 1e-3
 
 
-def species_table_from_dict(data: Mapping) -> SpeciesTable:
+def _molar_mass_si(field_name: str, value) -> float:
+    """A molar mass given as a number (kg/mol) or a quantity ("24 g/mol"), kg/mol."""
+    if isinstance(value, str):
+        from rotarykiln.units import ureg
+
+        try:
+            q = ureg.Quantity(value).to("kg/mol").magnitude
+        except Exception:  # noqa: BLE001  (pint raises several types)
+            raise InputError(field_name, value, "a molar mass (kg/mol, g/mol)") from None
+        value = float(q)
+    if isinstance(value, bool) or not isinstance(value, int | float) or not np.isfinite(value):
+        raise InputError(field_name, value, 'a molar mass > 0 (kg/mol or "24 g/mol")')
+    if value <= 0:
+        raise InputError(field_name, value, "> 0 kg/mol")
+    return float(value)
+
+
+_SPECIES_KEYS = {"elements", "composition", "molar_mass", "cp", "h_f", "description"}
+
+
+def _species_from_spec(
+    name: str, phase: str, spec, masses: Mapping[str, float], strict: bool = True
+) -> Species:
+    """One :class:`Species` from its YAML mapping (checked; see :func:`load_species`).
+
+    ``strict``: refuse keys other than those of a species (user files; the built-in file is
+    read as before, extra keys ignored)."""
+    from rotarykiln.chemistry.thermo import thermo_from_dict
+    from rotarykiln.units import to_si
+
+    f = f"species.{name}"
+    if not isinstance(spec, Mapping):
+        raise InputError(f, spec, "a mapping with elements (or composition), cp, h_f")
+    extra = sorted(set(spec) - _SPECIES_KEYS)
+    if extra and strict:
+        raise InputError(f"{f}.{extra[0]}", "given", "one of " + ", ".join(sorted(_SPECIES_KEYS)))
+    has_el, has_comp = spec.get("elements") is not None, spec.get("composition") is not None
+    if has_el == has_comp:
+        raise InputError(
+            f"{f}.elements",
+            "both given" if has_el else "missing",
+            "exactly one of elements (atoms per formula unit) or composition (element mass "
+            "fractions, with molar_mass)",
+        )
+    if has_el:
+        raw = spec["elements"]
+        if not isinstance(raw, Mapping) or not raw:
+            raise InputError(f"{f}.elements", raw, "a non-empty mapping element -> atoms")
+        elements = {}
+        for e, n in raw.items():
+            if isinstance(n, bool) or not isinstance(n, int | float):
+                raise InputError(f"{f}.elements.{e}", n, "a number of atoms > 0")
+            elements[str(e)] = float(n)
+        mm = _molar_mass(name, elements, masses)
+        if spec.get("molar_mass") is not None:
+            given = _molar_mass_si(f"{f}.molar_mass", spec["molar_mass"])
+            if abs(given - mm) > 1e-3 * mm:
+                raise InputError(
+                    f"{f}.molar_mass", spec["molar_mass"], f"{mm * 1e3:.6g} g/mol (from elements)"
+                )
+    else:
+        raw = spec["composition"]
+        if not isinstance(raw, Mapping) or not raw:
+            raise InputError(
+                f"{f}.composition", raw, "a non-empty mapping element -> mass fraction"
+            )
+        if spec.get("molar_mass") is None:
+            raise InputError(
+                f"{f}.molar_mass",
+                "missing",
+                "given with a composition (nominal, e.g. 0.024 kg/mol)",
+            )
+        mm = _molar_mass_si(f"{f}.molar_mass", spec["molar_mass"])
+        w = {}
+        for e, v in raw.items():
+            if e not in masses:
+                raise InputError(
+                    f"{f}.composition.{e}", e, f"a known element ({', '.join(masses)})"
+                )
+            if isinstance(v, bool) or not isinstance(v, int | float) or not 0 < v <= 1:
+                raise InputError(f"{f}.composition.{e}", v, "a mass fraction in (0, 1]")
+            w[str(e)] = float(v)
+        total = sum(w.values())
+        if abs(total - 1.0) > 1e-6:
+            raise InputError(
+                f"{f}.composition", f"fractions summing to {total:.6g}", "summing to 1"
+            )
+        elements = {e: v * mm / (masses[e] * 1e-3) for e, v in w.items()}
+    cp_spec = spec.get("cp", 1000.0)
+    thermo = None
+    if isinstance(cp_spec, Mapping):
+        thermo = thermo_from_dict(name, cp_spec, mm)
+        cp = thermo.mean_cp(298.15, min(max(thermo.T_high, 400.0), 1000.0))
+    else:
+        cp = to_si(f"{f}.cp", cp_spec, "specific heat") if isinstance(cp_spec, str) else cp_spec
+        if isinstance(cp, bool) or not isinstance(cp, int | float):
+            raise InputError(
+                f"{f}.cp", cp_spec, "a number in J/(kg K) or a nasa7/shomate/polynomial mapping"
+            )
+        cp = float(cp)
+        if not np.isfinite(cp) or cp <= 0:
+            raise InputError(f"{f}.cp", cp, "> 0")
+    h_f = spec.get("h_f")
+    if h_f is not None:
+        if isinstance(h_f, str):
+            h_f = to_si(f"{f}.h_f", h_f, "molar energy")
+        elif isinstance(h_f, bool) or not isinstance(h_f, int | float) or not np.isfinite(h_f):
+            raise InputError(f"{f}.h_f", h_f, 'a number in J/mol or a quantity ("-110.5 kJ/mol")')
+        h_f = float(h_f)
+    return Species(
+        name=name,
+        phase=phase,
+        elements=elements,
+        molar_mass=mm,
+        cp=cp,
+        h_f=h_f,
+        description=str(spec.get("description", "")),
+        thermo=thermo,
+    )
+
+
+def species_table_from_dict(
+    data: Mapping, base: SpeciesTable | None = None, *, strict: bool = False
+) -> SpeciesTable:
     """Build a :class:`SpeciesTable` from the ``species.yaml`` structure.
 
-    The dict has keys ``bed`` and ``gas`` (name -> {elements, cp, h_f, description}) and
-    ``elements`` (symbol -> atomic mass in g/mol).
+    The dict has keys ``bed`` and ``gas`` (name -> {elements or composition, molar_mass, cp,
+    h_f, description}) and ``elements`` (symbol -> atomic mass in g/mol). With ``base`` the
+    species are appended to that table (names must be new; elements may be added). ``strict``
+    refuses unknown keys (user species).
     """
-    masses = {e: float(m) for e, m in data.get("elements", {}).items()}
-    species = []
+    if not isinstance(data, Mapping):
+        raise InputError("species", data, "a mapping with bed, gas (and elements) sections")
+    extra = sorted(set(data) - {"bed", "gas", "elements"})
+    if extra:
+        raise InputError(f"species.{extra[0]}", "given", "one of bed, gas, elements")
+    masses = {} if base is None else {e: m * 1e3 for e, m in base.element_masses.items()}
+    for e, m in (data.get("elements") or {}).items():
+        if isinstance(m, bool) or not isinstance(m, int | float) or not np.isfinite(m) or m <= 0:
+            raise InputError(f"species.elements.{e}", m, "an atomic mass > 0 g/mol")
+        if e in masses and abs(masses[e] - float(m)) > 1e-9 * masses[e]:
+            raise InputError(f"species.elements.{e}", m, f"{masses[e]} g/mol (already defined)")
+        masses[str(e)] = float(m)
+    species = list(base.species) if base is not None else []
     for phase in ("bed", "gas"):
-        for name, spec in (data.get(phase) or {}).items():
+        section = data.get(phase) or {}
+        if not isinstance(section, Mapping):
+            raise InputError(f"species.{phase}", section, "a mapping name -> species")
+        for name, spec in section.items():
+            if not isinstance(name, str) or not name:
+                raise InputError(f"species.{phase}", name, "a non-empty species name")
             if name in [s.name for s in species]:
-                raise InputError(f"species.{name}", name, "a unique name")
-            elements = {e: float(n) for e, n in spec["elements"].items()}
-            mm = _molar_mass(name, elements, masses)
-            cp = float(spec.get("cp", 1000.0))
-            if cp <= 0:
-                raise InputError(f"species.{name}.cp", cp, "> 0")
-            h_f = spec.get("h_f")
-            species.append(
-                Species(
-                    name=name,
-                    phase=phase,
-                    elements=elements,
-                    molar_mass=mm,
-                    cp=cp,
-                    h_f=None if h_f is None else float(h_f),
-                    description=str(spec.get("description", "")),
-                )
-            )
+                raise InputError(f"species.{name}", name, "a unique (new) species name")
+            species.append(_species_from_spec(name, phase, spec, masses, strict))
+    # bed species first, then gas (the order every table keeps)
+    species.sort(key=lambda s: 0 if s.phase == "bed" else 1)
     return SpeciesTable(tuple(species), {e: m * 1e-3 for e, m in masses.items()})
+
+
+def load_species(source, base: SpeciesTable | None = None) -> SpeciesTable:
+    """Species table extended by user species from a YAML file or mapping.
+
+    Parameters
+    ----------
+    source : str, Path or mapping
+        A YAML file (or its content as a mapping) with ``bed:`` and/or ``gas:`` sections,
+        name -> {``elements`` (atoms per formula unit) or ``composition`` (element mass
+        fractions of a lumped species, with a nominal ``molar_mass``), ``cp`` (J/(kg K), or a
+        ``nasa7``, ``shomate`` or ``polynomial`` mapping with its ``T_range``,
+        :mod:`rotarykiln.chemistry.thermo`), ``h_f`` (J/mol at 298.15 K, optional),
+        ``description``}, and optionally ``elements:`` (new element -> g/mol). A file may
+        also hold the species under a top-level ``species:`` key.
+    base : SpeciesTable, optional
+        The table to extend (default :func:`default_species`).
+
+    Returns
+    -------
+    SpeciesTable
+        ``base`` followed by the new species (bed species first).
+
+    Raises
+    ------
+    InputError
+        One line naming the field: a species without elements, an unknown element, fractions
+        not summing to 1, a c_p form negative in its range, a name already taken.
+
+    Examples
+    --------
+    >>> sp = load_species({"bed": {"lignin": {"composition": {"C": 0.63, "H": 0.06,
+    ...     "O": 0.31}, "molar_mass": "180 g/mol", "cp": 1500.0}}})
+    >>> round(sp["lignin"].elements["C"], 2), "CaCO3" in sp
+    (9.44, True)
+    >>> load_species({"gas": {"X": {"cp": 1000.0}}})
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: species.X.elements: missing (required: exactly one of elements (atoms per formula unit) or composition (element mass fractions, with molar_mass))
+    """
+    if isinstance(source, Mapping):
+        data = source
+    else:
+        path = Path(source)
+        try:
+            with open(path, encoding="utf-8") as fh:
+                data = yaml.safe_load(fh)
+        except OSError as exc:
+            raise InputError(
+                str(path), "unreadable", f"a readable YAML file ({exc.strerror})"
+            ) from None
+        except yaml.YAMLError as exc:
+            raise InputError(str(path), "invalid YAML", f"valid YAML ({exc})") from None
+    if isinstance(data, Mapping) and "species" in data and not ({"bed", "gas"} & set(data)):
+        data = data["species"]
+    return species_table_from_dict(data, default_species() if base is None else base, strict=True)
 
 
 @lru_cache(maxsize=1)
