@@ -1,0 +1,535 @@
+r"""Events of a transient kiln run: a YAML file with units, read once, checked, made a schedule.
+
+A transient file (YAML)::
+
+    start: steady            # or cold: the kiln at ambient, filled with its hold-up of cold feed
+    events:                  # in time order; a step, or a ramp with ``over``
+      - {at: 1 h, variable: feed, to: 70 kg/h}
+      - {at: 2 h, variable: fuel_flow, to: 2.2 NL/s, over: 30 min}
+      - {at: 5 h, variable: drum, to: stop}      # solids and feed stop; ``to: run`` restarts
+      - {at: 5.5 h, variable: drum, to: run}
+    tracer: {at: 0 s, duration: 2 min}           # a non-reacting tracer pulse in the feed
+    wall:                    # heat capacity of the lining layers, inner to outer
+      layers:
+        - {density: 1300 kg/m3, specific_heat: 1000 J/kg/K}
+        - {density: 7850 kg/m3, specific_heat: 490 J/kg/K}
+    output_every: 5 min
+
+Variables: ``feed`` (solids mass flow, composition kept), ``feed_temperature``, ``speed``
+(the solids speed follows the rotation rate, Saeman: u ~ n at a given bed), ``drum``
+(``stop``/``run``: a stopped drum carries no solids, so the feed stops with it); with a burner
+``fuel_flow``, ``primary_air``, ``secondary_air`` (mass, molar or normal volume flows; the
+burner's products are recomputed, :func:`~rotarykiln.kiln.flame.fire`); without a burner
+``gas_flow`` (composition kept) and ``gas_inlet_temperature``.
+Refused with one line (:class:`~rotarykiln.errors.InputError`) naming the event: events out of
+order, negative times or beyond the end of the run, a ramp into another event of the same
+variable, negative flows, an unknown variable.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+import yaml
+from pydantic import BaseModel, ConfigDict, ValidationError
+
+from rotarykiln.errors import InputError
+from rotarykiln.kiln.holdup import DEFAULT_NODE_SPACING, WallProperties
+from rotarykiln.units import gas_flow, to_si
+
+__all__ = [
+    "TransientSpec",
+    "Event",
+    "Schedule",
+    "read_transient_file",
+    "parse_transient",
+    "VARIABLES",
+]
+
+#: Event variables -> (kind of quantity, what it needs).
+VARIABLES = {
+    "feed": "mass flow",
+    "feed_temperature": "temperature",
+    "speed": "rotation rate",
+    "drum": "stop or run",
+    "fuel_flow": "gas flow",
+    "primary_air": "gas flow",
+    "secondary_air": "gas flow",
+    "gas_flow": "mass flow",
+    "gas_inlet_temperature": "temperature",
+}
+BURNER_VARIABLES = ("fuel_flow", "primary_air", "secondary_air")
+GAS_VARIABLES = ("gas_flow", "gas_inlet_temperature")
+#: Knots per ramp at which the derived inputs (burner products) are computed.
+RAMP_KNOTS = 11
+
+_Q = str | float | int
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class EventSpec(_Strict):
+    at: _Q
+    variable: str
+    to: _Q
+    over: _Q | None = None
+
+
+class TracerSpec(_Strict):
+    at: _Q = 0.0
+    duration: _Q
+    mass: _Q | None = None
+
+
+class WallLayerSpec(_Strict):
+    density: _Q
+    specific_heat: _Q
+
+
+class WallSpec(_Strict):
+    layers: list[WallLayerSpec] = []
+    thickness: _Q | None = None
+    density: _Q | None = None
+    specific_heat: _Q | None = None
+    max_node_spacing: _Q | None = None
+
+
+class TransientSpec(_Strict):
+    """The transient file as read (quantities still strings with units)."""
+
+    start: Literal["steady", "cold"] = "steady"
+    events: list[EventSpec] = []
+    tracer: TracerSpec | None = None
+    wall: WallSpec | None = None
+    output_every: _Q | None = None
+
+
+@dataclass(frozen=True)
+class Event:
+    """One event in SI: ``time`` (s), ``variable``, ``value`` (SI, or "stop"/"run"),
+    ``duration`` (s, 0 for a step), ``label`` (``events[i]`` for messages)."""
+
+    time: float
+    variable: str
+    value: object
+    duration: float = 0.0
+    label: str = ""
+
+    @property
+    def end(self) -> float:
+        return self.time + self.duration
+
+
+@dataclass(frozen=True)
+class Transient:
+    """A checked transient file in SI: ``start``, ``events``, ``tracer`` (start s, duration s,
+    mass kg or None), ``wall`` (:class:`~rotarykiln.kiln.holdup.WallProperties`),
+    ``output_every`` (s or None)."""
+
+    start: str
+    events: tuple[Event, ...]
+    tracer: tuple[float, float, float | None] | None
+    wall: WallProperties
+    output_every: float | None
+
+
+def _format_validation(exc: ValidationError, prefix: str = "") -> str:
+    e = exc.errors()[0]
+    loc = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in e["loc"]).lstrip(".")
+    loc = f"{prefix}{loc}" if loc else prefix.rstrip(".") or "transient file"
+    if e["type"] == "extra_forbidden":
+        return f"{loc}: unknown key"
+    if e["type"] == "missing":
+        return f"{loc}: missing (required)"
+    if e["type"] == "literal_error":
+        return f"{loc}: {e['input']!r} is not one of {e['ctx']['expected']}"
+    return f"{loc}: {e['input']!r} is not accepted ({e['msg']})"
+
+
+def read_transient_file(path) -> dict:
+    """The YAML mapping of a transient file (InputError for a missing or malformed file)."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError("--events", str(path), "an existing YAML file")
+    try:
+        data = yaml.safe_load(p.read_text(encoding="utf-8"))
+    except yaml.YAMLError as exc:
+        line = getattr(getattr(exc, "problem_mark", None), "line", None)
+        where = f" (line {line + 1})" if line is not None else ""
+        raise InputError(str(path), message=f"{path}: not valid YAML{where}") from None
+    if data is None:
+        data = {}
+    if not isinstance(data, dict):
+        raise InputError(str(path), message=f"{path}: expected a mapping (start, events, ...)")
+    return data
+
+
+def _time(field, value) -> float:
+    return to_si(field, value, "time")
+
+
+def parse_transient(data: dict, kiln, until: float) -> Transient:
+    """Check a transient file's mapping against ``kiln`` and the end time ``until`` (s).
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> from rotarykiln.kiln.build import kiln_from_case
+    >>> kiln, _ = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    >>> t = parse_transient({"events": [{"at": "1 h", "variable": "feed", "to": "30 kg/h"}],
+    ...     "wall": {"thickness": "5 mm", "density": "7850 kg/m3",
+    ...              "specific_heat": "490 J/kg/K"}}, kiln, 7200.0)
+    >>> t.events[0].time, round(t.events[0].value * 3600, 6)
+    (3600.0, 30.0)
+    >>> parse_transient({"events": [{"at": "1 h", "variable": "colour", "to": "red"}]},
+    ...                 kiln, 7200.0)
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: events[0].variable: 'colour' is not one of feed, feed_temperature, speed, drum, gas_flow, gas_inlet_temperature
+    """
+    try:
+        spec = TransientSpec.model_validate(data)
+    except ValidationError as exc:
+        raise InputError("transient file", message=_format_validation(exc)) from None
+    burner = getattr(kiln, "flame", None) is not None
+    allowed = [v for v in VARIABLES if v not in (GAS_VARIABLES if burner else BURNER_VARIABLES)]
+    events = []
+    last_end: dict[str, float] = {}
+    previous = 0.0
+    for i, e in enumerate(spec.events):
+        label = f"events[{i}]"
+        t = _time(f"{label}.at", e.at)
+        if t < 0:
+            raise InputError(f"{label}.at", e.at, ">= 0 s")
+        if t > until:
+            raise InputError(f"{label}.at", e.at, f"<= the end of the run ({until:g} s)")
+        if t < previous:
+            raise InputError(
+                f"{label}.at", e.at, f"in time order (after the previous event at {previous:g} s)"
+            )
+        previous = t
+        if e.variable not in allowed:
+            raise InputError(
+                f"{label}.variable",
+                message=f"{label}.variable: {e.variable!r} is not one of " + ", ".join(allowed),
+            )
+        duration = 0.0
+        if e.over is not None:
+            if e.variable == "drum":
+                raise InputError(f"{label}.over", e.over, "absent for the drum (a stop is a step)")
+            duration = _time(f"{label}.over", e.over)
+            if duration <= 0:
+                raise InputError(f"{label}.over", e.over, "> 0 s")
+            if t + duration > until * (1 + 1e-12):
+                raise InputError(
+                    f"{label}.over",
+                    e.over,
+                    f"a ramp ending by the end of the run ({until:g} s)",
+                )
+        if t < last_end.get(e.variable, -1.0):
+            raise InputError(
+                f"{label}.at",
+                e.at,
+                f"after the ramp of {e.variable} before it ends ({last_end[e.variable]:g} s)",
+            )
+        last_end[e.variable] = t + duration
+        value = _event_value(label, e.variable, e.to, kiln)
+        events.append(Event(t, e.variable, value, duration, label))
+    tracer = None
+    if spec.tracer is not None:
+        s = spec.tracer
+        t0 = _time("tracer.at", s.at)
+        dt = _time("tracer.duration", s.duration)
+        if t0 < 0:
+            raise InputError("tracer.at", s.at, ">= 0 s")
+        if dt <= 0:
+            raise InputError("tracer.duration", s.duration, "> 0 s")
+        if t0 + dt > until:
+            raise InputError("tracer.duration", s.duration, f"a pulse ending by {until:g} s")
+        mass = None
+        if s.mass is not None:
+            mass = to_si("tracer.mass", s.mass, "mass")
+            if mass <= 0:
+                raise InputError("tracer.mass", s.mass, "> 0 kg")
+        tracer = (t0, dt, mass)
+    every = None
+    if spec.output_every is not None:
+        every = _time("output_every", spec.output_every)
+        if not 0 < every <= until:
+            raise InputError("output_every", spec.output_every, f"in (0, {until:g}] s")
+    return Transient(spec.start, tuple(events), tracer, _wall(spec.wall, kiln), every)
+
+
+def _event_value(label, variable, value, kiln):
+    field = f"{label}.to"
+    if variable == "drum":
+        if value not in ("stop", "run"):
+            raise InputError(field, message=f"{field}: {value!r} is not stop or run")
+        return value
+    if variable in BURNER_VARIABLES:
+        from rotarykiln.kiln.flame import AIR
+        from rotarykiln.materials.gas import molar_mass
+
+        comp = kiln.flame.burner.fuel if variable == "fuel_flow" else AIR
+        flow = gas_flow(value, field, allow_zero=variable != "fuel_flow")
+        return flow.mass_flow(molar_mass(comp))
+    kind = VARIABLES[variable]
+    v = to_si(field, value, kind)
+    if kind in ("mass flow", "temperature", "rotation rate") and not v > 0:
+        accepted = "> 0 kg/s" if kind == "mass flow" else "> 0"
+        if variable == "feed":
+            accepted += " (to stop the solids use variable: drum, to: stop)"
+        raise InputError(field, value, accepted)
+    return v
+
+
+def _wall(spec: WallSpec | None, kiln) -> WallProperties:
+    spec = spec or WallSpec()
+    spacing = DEFAULT_NODE_SPACING
+    if spec.max_node_spacing is not None:
+        spacing = to_si("wall.max_node_spacing", spec.max_node_spacing, "length")
+    layers = tuple(
+        (
+            to_si(f"wall.layers[{i}].density", w.density, "density"),
+            to_si(f"wall.layers[{i}].specific_heat", w.specific_heat, "specific heat"),
+        )
+        for i, w in enumerate(spec.layers)
+    )
+    if kiln.layers and not layers:
+        raise InputError(
+            "wall.layers",
+            None,
+            f"given (a density and specific heat for each of the {len(kiln.layers)} lining "
+            "layers: the wall's heat capacity drives a start-up)",
+        )
+    lumped = None
+    if not kiln.layers:
+        given = (spec.thickness, spec.density, spec.specific_heat)
+        if any(v is None for v in given):
+            raise InputError(
+                "wall.thickness",
+                None,
+                "given with wall.density and wall.specific_heat (a U-value wall has no lining "
+                "to give it a heat capacity)",
+            )
+        lumped = (
+            to_si("wall.thickness", spec.thickness, "length"),
+            to_si("wall.density", spec.density, "density"),
+            to_si("wall.specific_heat", spec.specific_heat, "specific heat"),
+        )
+    return WallProperties(layers, lumped, spacing)
+
+
+# --- the schedule: inputs against time ----------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Inputs:
+    """Boundary inputs of the kiln at one time (SI): bed feed per bed species (kg/s), feed
+    temperature (K), gas inlet flow per gas species (kg/s), gas inlet temperature (K), heat
+    released along a flame (W), rotation rate (rad/s), solids speed over that of the case (-),
+    tracer feed (kg/s)."""
+
+    feed: np.ndarray
+    feed_temperature: float
+    gas: np.ndarray
+    gas_temperature: float
+    heat_release: float
+    omega: float
+    speed_factor: float
+    tracer: float
+
+    def vector(self) -> np.ndarray:
+        return np.concatenate(
+            [
+                self.feed,
+                [self.feed_temperature],
+                self.gas,
+                [self.gas_temperature, self.heat_release, self.omega, self.speed_factor],
+                [self.tracer],
+            ]
+        )
+
+
+@lru_cache(maxsize=256)
+def _flame_gas(burner, diameter, length, gas_names):
+    """Gas inlet flows (per ``gas_names``), temperature and heat release of ``burner``."""
+    from rotarykiln.kiln.flame import fire
+    from rotarykiln.materials.gas import molar_mass
+
+    flame = fire(burner, diameter, length)
+    p = flame.products
+    mass = {}
+    for name, x in p.composition:
+        key = name if name in gas_names else "N2"
+        mass[key] = mass.get(key, 0.0) + x * molar_mass(f"{name}:1")
+    total = sum(mass.values())
+    flows = np.array([p.mass_flow * mass.get(s, 0.0) / total for s in gas_names])
+    return flows, float(flame.inlet_temperature), float(flame.heat_release)
+
+
+class Schedule:
+    """Inputs of ``kiln`` against time for ``events`` (and a tracer pulse), over [0, until].
+
+    :meth:`segments` are the intervals between the discontinuities (steps, ramp ends, tracer
+    pulse); inside a segment :meth:`inputs` is linear between knots (ramps of the burner are
+    computed at :data:`RAMP_KNOTS` points, the products of a flame being nonlinear in its flows).
+    """
+
+    def __init__(self, kiln, bed_names, gas_names, events=(), until=0.0, tracer=None):
+        self.kiln = kiln
+        self.bed_names, self.gas_names = tuple(bed_names), tuple(gas_names)
+        self.events = tuple(events)
+        self.until = float(until)
+        feed = np.array([kiln.feed.get(s, 0.0) for s in self.bed_names])
+        self.feed_fractions = feed / feed.sum()
+        self.base = {"feed": float(feed.sum()), "feed_temperature": kiln.feed_temperature}
+        self.base.update(speed=kiln.omega, drum="run")
+        if kiln.flame is not None:
+            b = kiln.flame.burner
+            self.base.update(
+                fuel_flow=b.fuel_flow,
+                primary_air=b.primary_air.flow,
+                secondary_air=b.secondary_air.flow,
+            )
+        gas = np.array([kiln.gas_in.get(s, 0.0) for s in self.gas_names])
+        self.gas_fractions = gas / gas.sum()
+        self.base.update(
+            gas_flow=float(gas.sum()), gas_inlet_temperature=kiln.gas_inlet_temperature
+        )
+        self.tracer = tracer
+        cuts = {0.0, self.until}
+        for e in self.events:
+            cuts.update((e.time, e.end))
+        if tracer is not None:
+            cuts.update((tracer[0], tracer[0] + tracer[1]))
+        cuts = sorted(c for c in cuts if 0.0 <= c <= self.until)
+        self._segments = list(zip(cuts[:-1], cuts[1:], strict=True))
+        self._knots = {}
+
+    def segments(self):
+        """Intervals (s) between discontinuities of the inputs."""
+        return list(self._segments)
+
+    def value(self, variable, t, right=True):
+        """The raw value of ``variable`` at ``t`` (s): right or left limit at a step."""
+        v = self.base[variable]
+        for e in self.events:
+            if e.variable != variable:
+                continue
+            if e.time > t or (e.time == t and not right and e.duration == 0):
+                break
+            if e.duration == 0 or t >= e.end:
+                v = e.value
+            else:
+                v = v + (e.value - v) * (t - e.time) / e.duration
+        return v
+
+    def _derived(self, t, right):
+        k = self.kiln
+        running = self.value("drum", t, right) == "run"
+        feed = self.value("feed", t, right) * running
+        omega = self.value("speed", t, right)
+        s = omega / k.omega * running
+        if k.flame is not None:
+            b = k.flame.burner
+            burner = dataclasses.replace(
+                b,
+                fuel_flow=self.value("fuel_flow", t, right),
+                primary_air=dataclasses.replace(
+                    b.primary_air, flow=self.value("primary_air", t, right)
+                ),
+                secondary_air=dataclasses.replace(
+                    b.secondary_air, flow=self.value("secondary_air", t, right)
+                ),
+            )
+            if burner == b:
+                gas = np.array([k.gas_in.get(n, 0.0) for n in self.gas_names])
+                t_gas, release = k.gas_inlet_temperature, k.heat_release
+            else:
+                if burner.air_flow <= 0:
+                    raise InputError(
+                        "events",
+                        message="events: the burner's air flows reach 0 (a flame needs air)",
+                    )
+                gas, t_gas, release = _flame_gas(burner, 2.0 * k.radius, k.length, self.gas_names)
+        else:
+            gas = self.value("gas_flow", t, right) * self.gas_fractions
+            t_gas, release = self.value("gas_inlet_temperature", t, right), k.heat_release
+        tracer = 0.0
+        if self.tracer is not None:
+            t0, dt, mass = self.tracer
+            inside = (t0 <= t < t0 + dt) if right else (t0 < t <= t0 + dt)
+            if inside:
+                m = mass if mass is not None else 0.01 * self.base["feed"] * dt
+                tracer = m / dt
+        return Inputs(
+            feed * self.feed_fractions,
+            self.value("feed_temperature", t, right),
+            np.asarray(gas, dtype=float),
+            float(t_gas),
+            float(release),
+            omega,
+            s,
+            tracer,
+        )
+
+    def _segment_knots(self, i):
+        if i not in self._knots:
+            a, b = self._segments[i]
+            ts = [a, b]
+            for e in self.events:
+                if e.duration > 0 and e.time < b and e.end > a:
+                    ts += list(np.linspace(e.time, e.end, RAMP_KNOTS))
+            ts = np.array(sorted({t for t in ts if a <= t <= b}))
+            vals = [self._derived(t, right=True) for t in ts[:-1]]
+            vals.append(self._derived(ts[-1], right=False))
+            self._knots[i] = (ts, vals, np.array([v.vector() for v in vals]))
+        return self._knots[i]
+
+    def inputs(self, t, segment: int) -> Inputs:
+        """The inputs at ``t`` (s) inside segment number ``segment``."""
+        ts, vals, mat = self._segment_knots(segment)
+        if len(ts) == 2 and np.array_equal(mat[0], mat[1]):
+            return vals[0]
+        v = np.array([np.interp(t, ts, mat[:, c]) for c in range(mat.shape[1])])
+        nb, ng = len(self.bed_names), len(self.gas_names)
+        return Inputs(v[:nb], v[nb], v[nb + 1 : nb + 1 + ng], *v[nb + 1 + ng :])
+
+
+def kiln_at(kiln, u: Inputs, bed_names, gas_names):
+    """A copy of ``kiln`` with the inputs ``u`` (for the steady solve of the new inputs).
+
+    Raises InputError when the inputs are not a steady kiln (a stopped drum).
+    """
+    if u.speed_factor <= 0:
+        raise InputError("drum", "stop", "running for a steady kiln")
+    feed = {s: float(q) for s, q in zip(bed_names, u.feed, strict=True) if q > 0}
+    gas = {s: float(q) for s, q in zip(gas_names, u.gas, strict=True) if q > 0}
+    return dataclasses.replace(
+        kiln,
+        feed=feed,
+        feed_temperature=u.feed_temperature,
+        gas_in=gas,
+        gas_inlet_temperature=u.gas_temperature,
+        heat_release=u.heat_release,
+        omega=u.omega,
+        bed_velocity=kiln.bed_velocity * u.speed_factor,
+    )
+
+
+def shallow_with(obj, **changes):
+    """A shallow copy of a frozen dataclass with ``changes``, without re-validation."""
+    new = copy.copy(obj)
+    for name, value in changes.items():
+        object.__setattr__(new, name, value)
+    return new

@@ -1,0 +1,550 @@
+r"""The transient kiln: the steady residual with hold-ups, integrated in time (method of lines).
+
+Every cell of the steady model (:class:`~rotarykiln.kiln.residual.KilnResidual`, the same
+cells, closures, burner, reactions and bed profile) becomes a set of ordinary differential
+equations: what a balance does not pass on, it stores,
+
+.. math:: \frac{dU_{j,r}}{dt} = -R_{j,r}(x)
+
+with :math:`R` the steady residual of row r of cell j (net outflow: energy in W, species in
+kg/s) and :math:`U` the hold-up of :mod:`rotarykiln.kiln.holdup`: bed species
+:math:`M_{ij} = \tau_j \dot m_{ij}`, bed energy :math:`\tau_j\sum_i \dot m_{ij} h_i(T_b)`,
+gas likewise with its own (real, frozen) hold-up, and the wall nodes :math:`C_k T_k`. The
+unknowns stay those of the steady model (temperatures at the cell outlets, species flows), so
+
+.. math:: \frac{d\dot m_{ij}}{dt} = -\frac{R_{ij}}{\tau_j},\qquad
+          \frac{dT_{b,j}}{dt} = \frac{-R^E_j - \tau_j\sum_i h_i\,d\dot m_{ij}/dt}
+                                     {\tau_j\sum_i \dot m_{ij} c_{p,i}},\qquad
+          \frac{dT_k}{dt} = \frac{R^{wall}_k}{C_k}.
+
+Every bed and gas species is a state here (the steady model keeps the species no reaction
+touches at their inlet flow), so a feed or fuel step travels with the solids and the gas.
+The solids speed of the case is multiplied by the speed factor of the events
+(:mod:`rotarykiln.kiln.events`; 0 for a stopped drum): the transport terms of the bed rows, and
+the bed's axial dispersion, are scaled by it. The exchange geometry (the fill profile of the
+case) is held; the hold-up follows the flows. A solved Kramers bed depth is not supported.
+
+A non-reacting tracer rides with the bed: its mass :math:`m_j` in each cell leaves at
+:math:`s\,m_j/\tau_j` and disperses with the bed
+(:func:`~rotarykiln.kiln.dispersion.dispersion_sources`); a pulse in the feed gives the RTD of
+the dynamic model.
+
+The system is integrated by scipy's BDF (variable order, implicit, stiff) with the sparsity of
+the block-tridiagonal structure (``jac_sparsity``: a finite-difference Jacobian in 3 x block
+evaluations). Quadrature states integrate the energy and every species across the two ends
+(feed, discharge, gas inlet and outlet), the shell loss, the heat released and the heat of
+reaction, so the energy and element balances over time are checked against the inventories.
+
+References
+----------
+W.E. Schiesser, The Numerical Method of Lines, Academic Press (1991); L.F. Shampine,
+M.W. Reichelt, SIAM J. Sci. Comput. 18 (1997) 1-22 (the BDF/NDF codes scipy follows).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import time as _time
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.sparse import lil_matrix
+
+from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln.dispersion import dispersion_sources
+from rotarykiln.kiln.events import Inputs, Schedule, Transient, kiln_at, shallow_with
+from rotarykiln.kiln.holdup import Holdup, WallProperties, refine_lining
+from rotarykiln.kiln.residual import T_FLOOR, KilnResidual
+from rotarykiln.kiln.transient_result import TransientSolution
+
+__all__ = ["TransientResidual", "TransientKiln", "simulate"]
+
+#: Temperature step of the numerical heat capacity dh/dT, K.
+CP_STEP = 0.05
+
+
+class TransientResidual(KilnResidual):
+    """The steady residual with every bed and gas species as an unknown (linear flows).
+
+    The unknowns of a cell: bed temperature, gas temperature, wall temperatures, every bed
+    species flow over the feed, every gas species flow over the gas inlet flow. Its steady
+    solutions are those of :class:`KilnResidual` (a species no reaction touches keeps its flow).
+    """
+
+    def __init__(self, kiln, n_cells: int):
+        if kiln.bed_depth is not None:
+            raise InputError(
+                "transport",
+                "a solved bed depth",
+                "a fixed fill or residence time for the transient model (it holds the bed "
+                "profile of the case)",
+            )
+        super().__init__(kiln, n_cells)
+        self.bed_var, self.gas_var = self.bed_names, self.gas_names
+        self.nb, self.ng = len(self.bed_names), len(self.gas_names)
+        self.bed_pos = np.arange(self.nb)
+        self.gas_pos = np.arange(self.ng)
+        self.sqrt_mask = np.zeros(self.nb, dtype=bool)
+        self.disperses = np.ones(self.nb, dtype=bool)
+        self.nv = self.i_species + self.nb + self.ng
+        self.q_ref = 1.0
+        self._kiln0, self._exchange0 = self.kiln, self.exchange
+        self._heat_release0 = kiln.heat_release
+
+    def set_inputs(self, u: Inputs) -> None:
+        """Point the residual at the boundary inputs ``u`` (feed, gas inlet, speed)."""
+        self.bed_in = u.feed
+        self.gas_inlet = u.gas
+        self.flow_in = {s: float(q) for s, q in zip(self.bed_names, u.feed, strict=True)}
+        k = self.kiln
+        if (k.feed_temperature, k.gas_inlet_temperature) != (
+            u.feed_temperature,
+            u.gas_temperature,
+        ):
+            self.kiln = shallow_with(
+                self._kiln0,
+                feed_temperature=u.feed_temperature,
+                gas_inlet_temperature=u.gas_temperature,
+            )
+        if self.exchange.omega != u.omega:
+            self.exchange = dataclasses.replace(self._exchange0, omega=u.omega)
+        if self._heat_release0 > 0:
+            self.release_scale = u.heat_release / self._heat_release0
+
+    def species_slices(self):
+        i0 = self.i_species
+        return slice(i0, i0 + self.nb), slice(i0 + self.nb, i0 + self.nb + self.ng)
+
+
+@dataclass
+class _Run:
+    segment: int = 0
+    calls: int = 0
+    t_max: float = 0.0
+
+
+class TransientKiln:
+    """The method-of-lines system of a :class:`~rotarykiln.kiln.model.Kiln` on ``n`` cells.
+
+    ``wall`` (:class:`~rotarykiln.kiln.holdup.WallProperties`): heat capacity of the wall.
+    The lining is cut into sub-layers (:func:`~rotarykiln.kiln.holdup.refine_lining`).
+    """
+
+    def __init__(self, kiln, n_cells: int, wall: WallProperties):
+        self.kiln_case = kiln
+        parent = None
+        if kiln.layers:
+            layers, parent = refine_lining(kiln.layers, wall.max_node_spacing)
+            kiln = dataclasses.replace(kiln, layers=layers)
+        self.kiln = kiln
+        self.layer_parent = parent
+        self.wall_props = wall
+        self.res = res = TransientResidual(kiln, n_cells)
+        self.n, self.nv = res.n, res.nv
+        self.m = res.nv + 1  # + tracer mass per cell
+        self.sb, self.sg = res.species_slices()
+        self.n_acc = 1 + res.nb + res.ng  # energy, bed species, gas species across boundaries
+        self.size = self.n * self.m + self.n_acc
+        self.holdup: Holdup | None = None
+
+    # --- states --------------------------------------------------------------------------
+    def steady_state(self, kiln=None, **kw):
+        """The unknowns (n, nv) of the steady solution of ``kiln`` (default: the case's),
+        and the :class:`~rotarykiln.kiln.solution.KilnSolution`."""
+        from rotarykiln.kiln.solve import solve_kiln
+
+        k = self.kiln if kiln is None else kiln
+        sol = solve_kiln(k, self.n, **kw)
+        return self.unknowns_of(sol), sol
+
+    def unknowns_of(self, sol) -> np.ndarray:
+        """The transient unknowns (n, nv) of a steady solution on the same cells."""
+        res = self.res
+        x = np.empty((self.n, self.nv))
+        x[:, 0] = sol.t_bed_nodes[1:]
+        x[:, 1] = sol.t_gas_nodes[res.gas_out]
+        x[:, 2 : res.i_species] = sol.fluxes["x"][:, 2 : res.i_species]
+        for i, s in enumerate(res.bed_names):
+            x[:, self.sb.start + i] = sol.bed_flows[s][1:] / res.bed_scale
+        for i, s in enumerate(res.gas_names):
+            x[:, self.sg.start + i] = sol.gas_flows[s][res.gas_out] / res.gas_scale
+        return x
+
+    def cold_state(self, u: Inputs) -> np.ndarray:
+        """A cold kiln: everything at ambient, filled with its hold-up of feed, gas flowing."""
+        res = self.res
+        x = np.empty((self.n, self.nv))
+        x[:, : res.i_species] = self.kiln.ambient_temperature
+        x[:, self.sb] = u.feed / res.bed_scale
+        x[:, self.sg] = u.gas / res.gas_scale
+        return x
+
+    def pack(self, x, tracer=None) -> np.ndarray:
+        y = np.zeros(self.size)
+        blk = y[: self.n * self.m].reshape(self.n, self.m)
+        blk[:, : self.nv] = x
+        if tracer is not None:
+            blk[:, self.nv] = tracer
+        return y
+
+    def unpack(self, y):
+        blk = y[: self.n * self.m].reshape(self.n, self.m)
+        return blk[:, : self.nv], blk[:, self.nv], y[self.n * self.m :]
+
+    # --- inventories and boundary flows ----------------------------------------------------
+    def inventory(self, x):
+        """Energy (J, sensible above 298.15 K), bed and gas species (kg) held by the kiln."""
+        res, h = self.res, self.holdup
+        qb = x[:, self.sb] * res.bed_scale
+        qg = x[:, self.sg] * res.gas_scale
+        hb = res.bed_enthalpy(x[:, 0])
+        hg = res.mixture.species_enthalpy(x[:, 1])
+        mb = h.tau_bed[:, None] * qb
+        mg = h.tau_gas[:, None] * qg
+        energy = (mb * hb).sum() + (mg * hg).sum() + (h.wall * x[:, 2 : res.i_species]).sum()
+        return float(energy), mb.sum(0), mg.sum(0)
+
+    # --- the right-hand side ---------------------------------------------------------------
+    def rhs(self, t, y, schedule: Schedule, run: _Run, fluxes: bool = False):
+        """dy/dt at ``t``; ``y`` of shape (size,) or (size, k) (a batch of k states, for the
+        finite-difference Jacobian: the residual is evaluated once for all of them)."""
+        res, hold = self.res, self.holdup
+        run.calls += 1
+        run.t_max = max(run.t_max, t)
+        single = y.ndim == 1
+        Yb = (y[:, None] if single else y).T  # (k, size)
+        kb = Yb.shape[0]
+        blk_in = Yb[:, : self.n * self.m].reshape(kb, self.n, self.m)
+        x, tracer = blk_in[..., : self.nv], blk_in[..., self.nv]
+        u = schedule.inputs(t, run.segment)
+        res.set_inputs(u)
+        R, fl, prod, _, (tb_n, tg_n, qb, qg) = res.evaluate(x, full=True)
+        R = R.copy()
+        s = u.speed_factor
+        dz = res.dz
+        hb_nodes = res.bed_enthalpy(np.maximum(tb_n, T_FLOOR))
+        Hb = (qb * hb_nodes).sum(-1)
+        disp_e = disp_s = None
+        D = res.kiln.bed_dispersion
+        holdup_m = res.kiln.bulk_density * res.grid.bed_area * np.ones(self.n)
+        if D > 0 and s != 1.0:
+            disp_e, disp_s = dispersion_sources(D, holdup_m, qb, hb_nodes, dz, res.disperses)
+        if s != 1.0:
+            # actual transport = s x the transport of the flows held (the feed unscaled)
+            inner = np.ones(self.n)
+            inner[0] = 0.0
+            R[..., 0] += (s - 1.0) * (Hb[..., 1:] - inner * Hb[..., :-1])
+            dq = qb[..., 1:, :] - inner[:, None] * qb[..., :-1, :]
+            R[..., self.sb] += (s - 1.0) * dq / res.bed_scale
+            if D > 0:
+                R[..., 0] += (1.0 - s) * disp_e
+                R[..., self.sb] += (1.0 - s) * disp_s / res.bed_scale
+        dY = np.zeros_like(Yb)
+        blk = dY[:, : self.n * self.m].reshape(kb, self.n, self.m)
+        # species: d(tau Q)/dt = -R (scaled units)
+        db = -R[..., self.sb] / hold.tau_bed[:, None]
+        dg = -R[..., self.sg] / hold.tau_gas[:, None]
+        blk[..., self.sb] = db
+        blk[..., self.sg] = dg
+        # bed energy at the outlet face of each cell
+        q_b = qb[..., 1:, :]
+        h_b = hb_nodes[..., 1:, :]
+        tb = np.maximum(tb_n[..., 1:], T_FLOOR)
+        c_b = (res.bed_enthalpy(tb + CP_STEP) - res.bed_enthalpy(tb - CP_STEP)) / (2 * CP_STEP)
+        cap_b = hold.tau_bed * np.maximum((q_b * c_b).sum(-1), 1e-12 * res.bed_scale)
+        blk[..., 0] = (-R[..., 0] - hold.tau_bed * (h_b * db).sum(-1) * res.bed_scale) / cap_b
+        # gas energy at the gas outlet face of each cell
+        q_g = qg[..., res.gas_out, :]
+        tg = np.maximum(tg_n[..., res.gas_out], T_FLOOR)
+        mix = res.mixture
+        h_g = mix.species_enthalpy(tg)
+        c_g = (mix.species_enthalpy(tg + CP_STEP) - mix.species_enthalpy(tg - CP_STEP)) / (
+            2 * CP_STEP
+        )
+        cap_g = hold.tau_gas * np.maximum((q_g * c_g).sum(-1), 1e-12 * res.gas_scale)
+        blk[..., 1] = (-R[..., 1] - hold.tau_gas * (h_g * dg).sum(-1) * res.gas_scale) / cap_g
+        # wall nodes: the rows are what each node receives
+        blk[..., 2 : res.i_species] = R[..., 2 : res.i_species] / hold.wall
+        # tracer: leaves each cell at s m / tau, disperses with the bed
+        t_out = s * tracer / hold.tau_bed
+        feed_tr = np.full((kb, 1), u.tracer)
+        t_in = np.concatenate([feed_tr, t_out[:, :-1]], -1)
+        d_tr = t_in - t_out
+        if D > 0 and s > 0:
+            bulk = s * qb.sum(-1)
+            bulk[:, 0] = u.feed.sum()
+            tq = np.stack([bulk, np.concatenate([feed_tr, t_out], -1)], -1)
+            _, sp = dispersion_sources(
+                s * D, holdup_m, tq, np.zeros_like(tq), dz, np.array([False, True])
+            )
+            d_tr = d_tr + sp[..., 1]
+        blk[..., self.nv] = d_tr
+        # quadrature: energy and species across the ends, losses, sources
+        flux = self.boundary(u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes)
+        dY[:, self.n * self.m :] = flux["acc"]
+        dy = dY[0] if single else dY.T
+        if fluxes:
+            return dy, {
+                k: (v[0] if isinstance(v, np.ndarray) and v.ndim else v) for k, v in flux.items()
+            }
+        return dy
+
+    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes):
+        """Flows across the kiln's boundary (W and kg/s), arrays over the batch."""
+        res = self.res
+        s = u.speed_factor
+        dz = res.dz
+        gi, go = (-1, 0) if res.kiln.counter_current else (0, -1)
+        hg = res.mixture.species_enthalpy(np.maximum(tg_n, T_FLOOR))
+        e_in = hb_nodes[:, 0] @ u.feed + (qg[:, gi] * hg[:, gi]).sum(-1)
+        e_out = s * (qb[:, -1] * hb_nodes[:, -1]).sum(-1) + (qg[:, go] * hg[:, go]).sum(-1)
+        kb = qb.shape[0]
+
+        def total(key):
+            v = fl.get(key, 0.0)
+            return np.broadcast_to(v, (kb, self.n)).sum(-1) * dz
+
+        loss, release, heating = (
+            total("q_shell_loss"),
+            total("q_source_gas"),
+            total("q_electric_heating"),
+        )
+        tbm = fl["t_bed_mean"]
+        h_all = np.zeros_like(prod)
+        h_all[..., res.bed_idx] = res.bed_enthalpy(tbm)
+        h_all[..., res.gas_idx] = res.mixture.species_enthalpy(tbm)
+        absorbed = np.broadcast_to(fl["q_reaction_absorbed"], (kb, self.n))
+        reaction = (absorbed - (prod * h_all).sum(-1)).sum(-1) * dz
+        net_e = e_in + release + heating - e_out - loss - reaction
+        net_b = u.feed - s * qb[:, -1]
+        net_g = qg[:, gi] - qg[:, go]
+        out = {
+            "acc": np.concatenate([net_e[:, None], net_b, net_g], -1),
+            "energy_in_W": e_in,
+            "energy_out_W": e_out,
+            "shell_loss_W": loss,
+            "heat_release_W": release,
+            "electric_heating_W": heating,
+            "reaction_heat_W": reaction,
+            "bed_outlet_temperature_K": tb_n[:, -1],
+            "gas_outlet_temperature_K": tg_n[:, go],
+            "solids_outlet_flow_kg_s": s * qb[:, -1].sum(-1),
+            "gas_outlet_flow_kg_s": qg[:, go].sum(-1),
+            "feed_kg_s": np.full(kb, u.feed.sum()),
+            "gas_inlet_temperature_K": np.full(kb, u.gas_temperature),
+            "speed_factor": np.full(kb, s),
+        }
+        out = {k: v if k == "acc" else np.asarray(v, dtype=float) for k, v in out.items()}
+        out["bed_outlet"] = {n: float(s * qb[0, -1, i]) for i, n in enumerate(res.bed_names)}
+        out["gas_outlet"] = {n: float(qg[0, go, i]) for i, n in enumerate(res.gas_names)}
+        return out
+
+    def sparsity(self):
+        """Block-tridiagonal pattern of the Jacobian (quadrature rows left empty: they
+        feed back into nothing, and their Newton update is exact without them)."""
+        n, m = self.n, self.m
+        S = lil_matrix((self.size, self.size), dtype=np.int8)
+        for j in range(n):
+            lo, hi = max(j - 1, 0) * m, min(j + 2, n) * m
+            S[j * m : (j + 1) * m, lo:hi] = 1
+        return S.tocsr()
+
+
+def simulate(
+    kiln,
+    n_cells: int,
+    transient: Transient,
+    until: float,
+    *,
+    rtol: float = 1e-6,
+    progress: bool = False,
+    steady=None,
+    times=None,
+) -> TransientSolution:
+    """Integrate the transient kiln from t = 0 to ``until`` (s) under ``transient``'s events.
+
+    Parameters
+    ----------
+    kiln : Kiln
+        The kiln of the case (:func:`~rotarykiln.kiln.build.kiln_from_case`).
+    n_cells : int
+        Cells along the kiln (the steady model's grid).
+    transient : :class:`~rotarykiln.kiln.events.Transient`
+        Start (steady or cold), events, tracer pulse, wall heat capacities, output interval.
+    until : float, s
+        End of the run.
+    rtol : float
+        Relative tolerance of the BDF integrator (absolute tolerances: 1e-4 K on
+        temperatures, ``rtol`` x 1e-2 of the inlet flows on species).
+    progress : bool
+        A tqdm progress bar over simulated time.
+    steady : KilnSolution, optional
+        The steady solution of the case (on the same cells and refined lining) to start from.
+    times : array, optional
+        Output times (s); default every ``output_every`` or ``until`` / 200.
+
+    Returns
+    -------
+    :class:`~rotarykiln.kiln.transient_result.TransientSolution`
+
+    Raises
+    ------
+    ConvergenceError
+        The integrator fails (step size collapse); the message gives the time reached.
+    """
+    if not until > 0:
+        raise InputError("--until", until, "> 0 s")
+    tk = TransientKiln(kiln, n_cells, transient.wall)
+    res = tk.res
+    sched = Schedule(kiln, res.bed_names, res.gas_names, transient.events, until, transient.tracer)
+    u0 = sched.inputs(0.0, 0)
+    if transient.start == "steady":
+        if steady is None:
+            x0, steady = tk.steady_state()
+        else:
+            x0 = tk.unknowns_of(steady)
+    else:
+        x0 = tk.cold_state(u0)
+    tg_cells = _gas_cell_temperature(res, x0, u0)
+    tk.holdup = Holdup.of(res, transient.wall, tg_cells, tk.layer_parent)
+    y = tk.pack(x0)
+    if times is None:
+        every = transient.output_every or until / 200.0
+        times = np.arange(0.0, until + 0.5 * every, every)
+        times = np.unique(np.clip(times, 0.0, until))
+    times = np.asarray(times, dtype=float)
+    cuts = sorted({a for a, _ in sched.segments()} | {until})
+    times = np.unique(np.concatenate([times, cuts]))
+    atol = np.empty(tk.size)
+    blk = atol[: tk.n * tk.m].reshape(tk.n, tk.m)
+    blk[:, : res.i_species] = 1e-4
+    blk[:, res.i_species : tk.nv] = rtol * 1e-2
+    tr_scale = 1.0
+    if transient.tracer is not None:
+        t0, dt, mass = transient.tracer
+        tr_scale = mass if mass is not None else 0.01 * sched.base["feed"] * dt
+    blk[:, tk.nv] = rtol * 1e-3 * tr_scale
+    acc_scale = np.concatenate([[1.0 / rtol], np.full(res.nb + res.ng, 1e-9 / rtol)])
+    atol[tk.n * tk.m :] = rtol * acc_scale
+    S = tk.sparsity()
+    run = _Run()
+    bar = None
+    if progress:
+        from tqdm import tqdm
+
+        bar = tqdm(total=float(until), unit="s", desc="transient", leave=False)
+    states, stamp = [], []
+    started = _time.perf_counter()
+    steps = 0
+    try:
+        for i, (a, b) in enumerate(sched.segments()):
+            run.segment = i
+            te = times[(times >= a) & (times <= b)]
+            sol = solve_ivp(
+                tk.rhs,
+                (a, b),
+                y,
+                method="BDF",
+                t_eval=te,
+                jac_sparsity=S,
+                rtol=rtol,
+                atol=atol,
+                args=(sched, run),
+                vectorized=True,
+            )
+            if not sol.success:
+                raise ConvergenceError(
+                    f"the transient integration failed at t = {float(sol.t[-1]) if sol.t.size else a:.6g} s: "
+                    + sol.message,
+                    segment=i,
+                    calls=run.calls,
+                )
+            steps += sol.nfev
+            for k, tt in enumerate(sol.t):
+                if stamp and tt <= stamp[-1][0]:
+                    continue  # a segment's first time is the previous one's last (left limit kept)
+                stamp.append((float(tt), i))
+                states.append(sol.y[:, k].copy())
+            y = sol.y[:, -1].copy()
+            if bar is not None:
+                bar.update(b - bar.n)
+    finally:
+        if bar is not None:
+            bar.close()
+    wall_time = _time.perf_counter() - started
+    return _collect(tk, sched, stamp, states, steady, wall_time, run.calls, transient)
+
+
+def _gas_cell_temperature(res, x, u):
+    """Cell-mean gas temperature (K) of the unknowns ``x`` with the inlet temperature of ``u``."""
+    if res.kiln.counter_current:
+        faces = np.concatenate([x[:, 1], [u.gas_temperature]])
+    else:
+        faces = np.concatenate([[u.gas_temperature], x[:, 1]])
+    return np.maximum(0.5 * (faces[1:] + faces[:-1]), T_FLOOR)
+
+
+def _collect(tk, sched, stamp, states, steady, wall_time, calls, transient):
+    res = tk.res
+    t = np.array([s[0] for s in stamp])
+    Y = np.array(states)
+    n = len(t)
+    x_all = np.empty((n, tk.n, tk.nv))
+    tracer = np.empty((n, tk.n))
+    acc = np.empty((n, tk.n_acc))
+    outlet = []
+    inv_e = np.empty(n)
+    inv_b = np.empty((n, res.nb))
+    inv_g = np.empty((n, res.ng))
+    tb_faces = np.empty((n, tk.n + 1))
+    tg_faces = np.empty((n, tk.n + 1))
+    run = _Run()
+    for k in range(n):
+        x, tr, a = tk.unpack(Y[k])
+        x_all[k], tracer[k], acc[k] = x, tr, a
+        run.segment = stamp[k][1]
+        _, flux = tk.rhs(t[k], Y[k], sched, run, fluxes=True)
+        u = sched.inputs(t[k], stamp[k][1])
+        tb_n, tg_n, _, _ = res.faces(x)
+        tb_faces[k], tg_faces[k] = tb_n, tg_n
+        flux = {key: v for key, v in flux.items() if key != "acc"}
+        flux["tracer_outlet_kg_s"] = float(u.speed_factor * tr[-1] / tk.holdup.tau_bed[-1])
+        outlet.append(flux)
+        inv_e[k], inv_b[k], inv_g[k] = tk.inventory(x)
+    return TransientSolution(
+        name=res.kiln.name,
+        t=t,
+        z_nodes=res.z_nodes,
+        z=res.z,
+        x=x_all,
+        t_bed_nodes=tb_faces,
+        t_gas_nodes=tg_faces,
+        tracer=tracer,
+        accumulated=acc,
+        inventory_energy=inv_e,
+        inventory_bed=inv_b,
+        inventory_gas=inv_g,
+        outlet=outlet,
+        bed_names=res.bed_names,
+        gas_names=res.gas_names,
+        wall_labels=tuple(res.wall.labels()),
+        i_species=res.i_species,
+        bed_scale=res.bed_scale,
+        gas_scale=res.gas_scale,
+        gas_out=res.gas_out,
+        species=res.species,
+        steady=steady,
+        holdup=tk.holdup,
+        tracer_mass=_tracer_mass(transient, sched),
+        wall_time=wall_time,
+        rhs_calls=calls,
+        counter_current=res.kiln.counter_current,
+    )
+
+
+def _tracer_mass(transient, sched):
+    if transient.tracer is None:
+        return 0.0
+    t0, dt, mass = transient.tracer
+    return mass if mass is not None else 0.01 * sched.base["feed"] * dt
