@@ -185,9 +185,8 @@ def parse_transient(data: dict, kiln, until: float) -> Transient:
     >>> from rotarykiln.cases import builtin_case_path
     >>> from rotarykiln.kiln.build import kiln_from_case
     >>> kiln, _ = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
-    >>> t = parse_transient({"events": [{"at": "1 h", "variable": "feed", "to": "30 kg/h"}],
-    ...     "wall": {"thickness": "5 mm", "density": "7850 kg/m3",
-    ...              "specific_heat": "490 J/kg/K"}}, kiln, 7200.0)
+    >>> t = parse_transient({"events": [{"at": "1 h", "variable": "feed", "to": "30 kg/h"}]},
+    ...                     kiln, 7200.0)
     >>> t.events[0].time, round(t.events[0].value * 3600, 6)
     (3600.0, 30.0)
     >>> parse_transient({"events": [{"at": "1 h", "variable": "colour", "to": "red"}]},
@@ -305,11 +304,12 @@ def _wall(spec: WallSpec | None, kiln) -> WallProperties:
         for i, w in enumerate(spec.layers)
     )
     if kiln.layers and not layers:
+        layers = tuple(_library_heat_capacity(i, layer) for i, layer in enumerate(kiln.layers))
+    if kiln.layers and len(layers) != len(kiln.layers):
         raise InputError(
             "wall.layers",
-            None,
-            f"given (a density and specific heat for each of the {len(kiln.layers)} lining "
-            "layers: the wall's heat capacity drives a start-up)",
+            f"{len(layers)} layers",
+            f"one density and specific heat per lining layer ({len(kiln.layers)})",
         )
     lumped = None
     if not kiln.layers:
@@ -327,6 +327,29 @@ def _wall(spec: WallSpec | None, kiln) -> WallProperties:
             to_si("wall.specific_heat", spec.specific_heat, "specific heat"),
         )
     return WallProperties(layers, lumped, spacing)
+
+
+#: Specific heat of lining layers without one given, J/(kg K): steels (Incropera table A.1,
+#: plain carbon steel at 300-600 K) and refractories and insulation (fireclay, alumina-silica
+#: castables and mineral wools, 0.9-1.1 kJ/(kg K) over 300-1300 K).
+STEEL_CP, REFRACTORY_CP = 490.0, 1000.0
+
+
+def _library_heat_capacity(i, layer):
+    """Density (library) and specific heat (typical) of a lining layer's material."""
+    from rotarykiln.materials._library import load_library
+
+    lib = load_library("refractories.yaml")
+    name = layer.material.name
+    if name not in lib or "density" not in lib[name]:
+        raise InputError(
+            f"wall.layers[{i}]",
+            None,
+            f"given (density and specific_heat: the lining material {name!r} is not in the "
+            "material library)",
+        )
+    cp = STEEL_CP if "steel" in name else REFRACTORY_CP
+    return float(lib[name]["density"]), cp
 
 
 # --- the schedule: inputs against time ----------------------------------------------------------

@@ -42,7 +42,6 @@ import numpy as np
 
 from rotarykiln.errors import InputError, check_positive
 from rotarykiln.materials.gas import R_UNIVERSAL
-from rotarykiln.materials.lining import Layer
 
 __all__ = [
     "WallProperties",
@@ -76,7 +75,10 @@ class WallProperties:
             check_positive(f"wall.layers[{i}].specific_heat", cp, "J/(kg K)")
         if self.lumped is not None:
             for name, v, unit in zip(
-                ("thickness", "density", "specific_heat"), self.lumped, ("m", "kg/m3", "J/(kg K)")
+                ("thickness", "density", "specific_heat"),
+                self.lumped,
+                ("m", "kg/m3", "J/(kg K)"),
+                strict=True,
             ):
                 check_positive(f"wall.{name}", v, unit)
         check_positive("wall.max_node_spacing", self.max_node_spacing, "m")
@@ -90,7 +92,7 @@ def refine_lining(layers, max_spacing: float = DEFAULT_NODE_SPACING):
 
     Examples
     --------
-    >>> from rotarykiln.materials.lining import load_lining_material
+    >>> from rotarykiln.materials.lining import Layer, load_lining_material
     >>> brick = Layer(load_lining_material("fireclay_brick"), 0.09)
     >>> new, parent = refine_lining((brick,), 0.025)
     >>> len(new), round(new[0].thickness, 4), parent

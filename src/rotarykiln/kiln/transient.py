@@ -53,7 +53,7 @@ from scipy.sparse import lil_matrix
 
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln.dispersion import dispersion_sources
-from rotarykiln.kiln.events import Inputs, Schedule, Transient, kiln_at, shallow_with
+from rotarykiln.kiln.events import Inputs, Schedule, Transient, shallow_with
 from rotarykiln.kiln.holdup import Holdup, WallProperties, refine_lining
 from rotarykiln.kiln.residual import T_FLOOR, KilnResidual
 from rotarykiln.kiln.transient_result import TransientSolution
