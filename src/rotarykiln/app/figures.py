@@ -144,4 +144,4 @@ def composition_figure(profiles: dict[str, list], title: str) -> go.Figure | Non
                 hovertemplate="%{y:.3g} kg/h",
             )
         )
-    return _layout(fig, f"Solids composition: {title}", "flow along the kiln (kg/h)")
+    return _layout(fig, f"Solids composition: {title}", "solids species flow (kg/h)")

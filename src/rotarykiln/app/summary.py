@@ -40,6 +40,7 @@ KEY_FIGURES = {
     "thermal_efficiency": "Thermal efficiency",
     "energy_balance_closure": "Energy balance closure",
     "regime": "Bed regime",
+    "froude": "Froude number",
     "fill": "Fill fraction",
 }
 """Summary entries shown beside the outlet temperature (matched at the end of the key, the
@@ -106,21 +107,25 @@ def key_figures(summary: dict) -> list[tuple[str, str, str]]:
     >>> key_figures({"heat_residence_time_s": 4842.3, "heat_thermal_efficiency": 0.4936})
     [('Residence time', '80.7', 'min'), ('Thermal efficiency', '49.4', '%')]
     """
-    rows = []
-    for end, label in KEY_FIGURES.items():
+    found = {}
+    for end in KEY_FIGURES:
         key = next((k for k in summary if re.search(rf"(^|_){re.escape(end)}$", k)), None)
-        if key is None or summary[key] is None:
-            continue
-        value, unit = summary[key], split_unit(key)[1]
+        if key is not None and summary[key] is not None:
+            found[end] = key
+    powers = [summary[k] for k in found.values() if k.endswith("_W")]
+    kilowatts = any(isinstance(p, float) and abs(p) >= 1e4 for p in powers)  # one unit for all
+    rows = []
+    for end, key in found.items():
+        label, value, unit = KEY_FIGURES[end], summary[key], split_unit(key)[1]
         if isinstance(value, float) and math.isfinite(value):
             if unit == "s" and value >= 120:
                 value, unit = value / 60, "min"
-            elif unit == "W" and abs(value) >= 1e4:
+            elif unit == "W" and kilowatts:
                 value, unit = value / 1e3, "kW"
             elif end == "thermal_efficiency":
                 value, unit = 100 * value, "%"
             if unit in ("K", "min", "%", "kW"):
-                rows.append((label, f"{value:.1f}", unit))
+                rows.append((label, f"{value:.1f}" if unit != "kW" else f"{value:.2f}", unit))
                 continue
         rows.append((label, format_value(value, unit), unit))
     return rows
