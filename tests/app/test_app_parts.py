@@ -126,3 +126,20 @@ def test_a_run_with_a_bad_case_leaves_no_folder(tmp_path):
     with pytest.raises(InputError):
         store.run(raw)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_port_in_use_is_one_line(capsys):
+    import socket
+
+    pytest.importorskip("dash")
+    from rotarykiln.cli import main
+
+    with socket.socket() as busy:
+        busy.bind(("127.0.0.1", 0))
+        busy.listen()
+        port = busy.getsockname()[1]
+        assert main(["app", "--port", str(port)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"rotarykiln app: error: --port: cannot listen on 127.0.0.1:{port}")
+    assert err.count("\n") == 1
+    assert main(["app", "--port", "70000"]) == 2

@@ -82,10 +82,42 @@ class AppServer:
         self.stop()
 
 
+def _check_free(host: str, port: int) -> None:
+    """Refuse, in one line, a port another program listens on (Werkzeug would exit)."""
+    import socket
+
+    from rotarykiln.errors import InputError
+
+    try:
+        family = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM)[0][0]
+    except OSError as exc:
+        raise InputError(
+            "--host", message=f"--host: cannot listen on {host} ({exc.strerror or exc})"
+        ) from None
+    try:
+        with socket.socket(family, socket.SOCK_STREAM) as probe:
+            probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            probe.bind((host, port))
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        raise InputError(
+            "--port",
+            message=f"--port: cannot listen on {host}:{port} ({reason}); "
+            "choose another port, or --port 0 for a free one",
+        ) from None
+
+
 def serve(host: str = "127.0.0.1", port: int = 8050, open_browser: bool = False) -> None:
-    """Serve the app until interrupted (Ctrl+C)."""
+    """Serve the app until interrupted (Ctrl+C).
+
+    Raises
+    ------
+    InputError
+        The address cannot be listened on (a port in use, an unknown host).
+    """
     from werkzeug.serving import make_server
 
+    _check_free(host, port)
     app = create_app()
     server = make_server(host, port, app.server, threaded=True)
     url = f"http://{host}:{server.server_port}/"
