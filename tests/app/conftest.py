@@ -59,6 +59,8 @@ def browser(selenium_webdriver, tmp_path_factory):
     """One headless Chromium for the session (each test loads its own page)."""
     from selenium.webdriver.chrome.service import Service
 
+    os.environ.setdefault("SE_OFFLINE", "true")  # Selenium Manager fetches nothing
+
     options = selenium_webdriver.ChromeOptions()
     options.binary_location = CHROMIUM
     for arg in (
