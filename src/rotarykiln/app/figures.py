@@ -112,7 +112,7 @@ def temperature_figure(profiles: dict[str, list], title: str, raw: Any = None) -
                 x=zm,
                 y=tm,
                 mode="markers",
-                name=f"{NAMES.get(name, name)}, measured",
+                name=f"{name.replace('_', ' near ')}, measured",  # as the report's figure
                 marker={
                     "color": COLOURS.get(name, "#333"),
                     "size": 9,
