@@ -104,6 +104,15 @@ def test_displayed_outlet_temperature_is_the_solvers(browser, app_server, screen
     assert text.startswith(f"{expected:.1f} K"), (text, expected)
     displayed = float(re.match(r"([0-9.]+) K", text).group(1))
     assert abs(displayed - expected) <= 0.05 + 1e-9
+
+    # the profiles are drawn (Plotly loads its script after the page): bed, gas, wall, measured
+    traces = _wait(
+        browser,
+        lambda d: d.find_elements("css selector", "[id^=temperature-graph] .scatterlayer .trace"),
+    )
+    assert len(traces) >= 4
+    legend = _by(browser, "[id^=temperature-graph] .legend").text
+    assert "bed" in legend and "gas" in legend and "measured" in legend, legend
     screenshot(browser, "app_after_run.png")
 
     # the downloads: the case as run (with units), the tables, the report
