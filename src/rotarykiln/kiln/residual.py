@@ -45,8 +45,9 @@ from rotarykiln.chemistry.mechanism import CellState as ChemState
 from rotarykiln.kiln.discretisation import cell_grid
 from rotarykiln.kiln.dispersion import dispersion_sources
 from rotarykiln.kiln.exchange import FLOW_KEYS, BulkBed, CrossSectionExchange, cell_report
-from rotarykiln.kiln.gas_mixture import GasMixture, MixtureGas
+from rotarykiln.kiln.gas_mixture import MixtureGas
 from rotarykiln.kiln.model import Kiln
+from rotarykiln.kiln.thermo_gas import mixture_of
 from rotarykiln.kiln.wall import ConstantUWall, LinedWall
 from rotarykiln.materials.gas import T_REF
 
@@ -100,7 +101,13 @@ class KilnResidual:
         self.solid_pos = [
             (i, k.bed_solids[s]) for i, s in enumerate(self.bed_names) if s in k.bed_solids
         ]
-        self.mixture = GasMixture.of(self.gas_names, sp)
+        # user species with a c_p(T) (chemistry/thermo.py) carry their own enthalpy
+        self.solid_pos += [
+            (i, sp[s].thermo)
+            for i, s in enumerate(self.bed_names)
+            if sp[s].thermo is not None and s not in k.bed_solids and s not in k.bed_cp
+        ]
+        self.mixture = mixture_of(self.gas_names, sp)
         self.flow_in = {s: float(k.feed.get(s, 0.0)) for s in sp.bed_names}
         self.i_h2o = self.gas_names.index("H2O") if "H2O" in self.gas_names else None
         # grid, wall and exchange (shared with the heat model)
@@ -115,7 +122,9 @@ class KilnResidual:
             section=k.section,
         )
         self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
-        if k.layers:
+        if getattr(k, "jacket", None) is not None:  # kiln/jacket.py
+            self.wall = k.jacket.wall(k, g)
+        elif k.layers:
             self.wall = LinedWall.of(k, g)
         else:
             self.wall = ConstantUWall(k.wall_loss_u, 2.0 * np.pi * k.radius, k.ambient_temperature)
@@ -181,6 +190,23 @@ class KilnResidual:
         h = self.depth_faces(x)
         return self.depth.geometry(self.grid, 0.5 * (h[..., 1:] + h[..., :-1]))
 
+    def volume_flow(self, qb):
+        """Volumetric bed flow (m3/s) of the species flows ``qb`` (kg/s, bed species on the
+        last axis): the bed-depth model's own law when it has one (e.g. a bed that keeps its
+        volume as it pyrolyses, kiln/pyrolysis.py), else the flow over the bulk density."""
+        law = getattr(self.depth, "volume_flow", None)
+        if law is not None:
+            return law(self.bed_names, qb)
+        return qb.sum(-1) / self.kiln.bulk_density
+
+    def bed_density(self, qb):
+        """Bulk density of the bed (kg/m3) at the species flows ``qb``: the kiln's, or mass
+        over volume flow with a bed-depth model's own volume law."""
+        if getattr(self.depth, "volume_flow", None) is None:
+            return self.kiln.bulk_density
+        q = np.maximum(qb, 0.0)
+        return q.sum(-1) / np.maximum(self.volume_flow(q), 1e-300)
+
     # --- closures -------------------------------------------------------------------------------
     def gas_state(self, g_mean, geo=None) -> MixtureGas:
         """The freeboard gas of the cells from their mean species flows (kg/s)."""
@@ -216,7 +242,8 @@ class KilnResidual:
         if self.depth is None:
             holdup = qb.sum(-1) / k.bed_velocity
         else:
-            holdup = (k.bulk_density * np.broadcast_to(geo.bed_area, shape)).reshape(flat)
+            rho = self.bed_density(qb_out)
+            holdup = (rho * np.broadcast_to(geo.bed_area, shape)).reshape(flat)
         xg = self.mixture.mole_fractions(qg_out).reshape(flat, -1)
         pp = {s: k.pressure * xg[:, i] for i, s in enumerate(self.gas_names)}
         if k.steam_flow is not None:
@@ -297,7 +324,8 @@ class KilnResidual:
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
         disp_species = None
         if self.kiln.bed_dispersion > 0:
-            holdup = self.kiln.bulk_density * np.broadcast_to(geo.bed_area, tb.shape)
+            rho = self.bed_density(0.5 * (qb[..., 1:, :] + qb[..., :-1, :]))
+            holdup = rho * np.broadcast_to(geo.bed_area, tb.shape)
             disp_energy, disp_species = dispersion_sources(
                 self.kiln.bed_dispersion, holdup, qb, hb_nodes, dz, self.disperses
             )
@@ -318,7 +346,7 @@ class KilnResidual:
             rg = (dg - dz * w_gas[..., self.gas_pos]) / self.gas_scale
             parts.append(rg * self.q_ref)
         if self.depth is not None:
-            q_vol = qb.sum(-1) / self.kiln.bulk_density
+            q_vol = self.volume_flow(qb)
             rd = self.depth.residual(self.depth_faces(x), q_vol, dz)
             parts.append((rd * self.q_ref / self.depth.radius)[..., None])
         R = np.concatenate(parts, axis=-1)
@@ -331,7 +359,7 @@ class KilnResidual:
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
         }
-        if self.kiln.heaters:
+        if self.kiln.heaters or getattr(self.kiln, "jacket", None) is not None:
             chemistry["q_electric_heating"] = self.wall.heating(tl)
         if self.depth is not None:
             chemistry["fill"] = geo.fill
