@@ -55,7 +55,13 @@ def screenshot_dir(tmp_path_factory) -> Path:
 
 
 @pytest.fixture(scope="session")
-def browser(selenium_webdriver, tmp_path_factory):
+def downloads(tmp_path_factory) -> Path:
+    """The folder the browser saves downloads into."""
+    return tmp_path_factory.mktemp("downloads")
+
+
+@pytest.fixture(scope="session")
+def browser(selenium_webdriver, downloads):
     """One headless Chromium for the session (each test loads its own page)."""
     from selenium.webdriver.chrome.service import Service
 
@@ -73,13 +79,15 @@ def browser(selenium_webdriver, tmp_path_factory):
         "--no-first-run",
     ):
         options.add_argument(arg)
-    downloads = tmp_path_factory.mktemp("downloads")
     options.add_experimental_option(
         "prefs",
         {"download.default_directory": str(downloads), "download.prompt_for_download": False},
     )
     driver = selenium_webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
     driver.set_page_load_timeout(30)
+    driver.execute_cdp_cmd(
+        "Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": str(downloads)}
+    )
     try:
         yield driver
     finally:

@@ -85,7 +85,7 @@ def _open(driver, server) -> None:
     _wait(driver, lambda d: _field(d, "operation.speed").get_attribute("value"))
 
 
-def test_displayed_outlet_temperature_is_the_solvers(browser, app_server, screenshot):
+def test_displayed_outlet_temperature_is_the_solvers(browser, app_server, screenshot, downloads):
     _open(browser, app_server)
     assert _by(browser, "#case-info").text == f"Loaded: {CASE} (built-in)"
     assert _field(browser, "operation.speed").get_attribute("value") == "1.5 rpm"
@@ -129,6 +129,12 @@ def test_displayed_outlet_temperature_is_the_solvers(browser, app_server, screen
     with urllib.request.urlopen(links["report.html"], timeout=10) as response:
         assert f"{expected:.6g}"[:5] in response.read().decode()
 
+    # Save case: the edited case as a YAML file, with units, that loads to the same case
+    _by(browser, "#save-button").click()
+    saved = downloads / f"{CASE}.yaml"
+    _wait(browser, lambda d: saved.is_file() and saved.stat().st_size > 0)
+    assert parse_case(yaml.safe_load(saved.read_text(encoding="utf-8"))) == parse_case(raw)
+
 
 def _upload(driver, path) -> None:
     _by(driver, "#case-upload input[type=file]").send_keys(str(path))
@@ -149,6 +155,10 @@ def test_bad_input_is_shown_next_to_its_field_and_results_stay(
     assert "not done" in status, status
     assert "operation.speed: 3 has no unit" in _field_error(browser, "operation.speed")
     assert _by(browser, "#outlet-temperature").text == outlet  # nothing computed is lost
+    before = _status(browser)
+    _by(browser, "#save-button").click()  # nor saved
+    _wait(browser, lambda d: _status(d) != before)
+    assert _status(browser).startswith("Save 1 not done"), _status(browser)
     _type(browser, "operation.speed", "1.5 rpm")
     _wait(browser, lambda d: _field_error(d, "operation.speed") == "")
 

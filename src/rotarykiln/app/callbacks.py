@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import logging
 import time
+from pathlib import Path
 
 import yaml
 from dash import ALL, MATCH, Input, Output, State, ctx, dcc, no_update
@@ -19,6 +20,7 @@ from rotarykiln.app.layout import input_rows, results_view
 from rotarykiln.app.loading import load_builtin, load_upload
 from rotarykiln.app.running import RunStore, outlet_temperature
 from rotarykiln.case import parse_case
+from rotarykiln.case_io import case_to_yaml
 from rotarykiln.errors import ConvergenceError, InputError
 
 __all__ = ["register_callbacks"]
@@ -109,18 +111,26 @@ def register_callbacks(app, store: RunStore) -> None:
         Output("run-errors", "data"),
         Output("run-error", "children"),
         Output("run-status", "children"),
+        Output("case-download", "data"),
         Input("run-button", "n_clicks"),
+        Input("save-button", "n_clicks"),
         State("case-store", "data"),
         State({"type": "main-input", "path": ALL}, "value"),
         State({"type": "main-input", "path": ALL}, "id"),
         State("result-store", "data"),
         prevent_initial_call=True,
-        running=[(Output("run-button", "disabled"), True, False)],
+        running=[
+            (Output("run-button", "disabled"), True, False),
+            (Output("save-button", "disabled"), True, False),
+        ],
     )
-    def run(n_clicks, case_data, values, ids, previous):
-        keep = "The results shown are those of the last successful run."
+    def run(n_run, n_save, case_data, values, ids, previous):
+        saving = ctx.triggered_id == "save-button"
+        n = (n_run or 0) + (n_save or 0)  # a new status line for every press
+        what = f"Save {n_save}" if saving else f"Run {n_run}"
+        keep = "" if saving else " The results shown are those of the last successful run."
         if not case_data:
-            return no_update, no_update, "Load a case first.", f"Run {n_clicks} not done."
+            return no_update, no_update, "Load a case first.", f"{what} not done.", no_update
         paths = [i["path"] for i in ids]
         source = case_data["source"]
         started = time.perf_counter()
@@ -128,29 +138,35 @@ def register_callbacks(app, store: RunStore) -> None:
             raw = apply_edits(
                 yaml.safe_load(case_data["yaml"]), dict(zip(paths, values, strict=True))
             )
+            if saving:
+                text = case_to_yaml(parse_case(raw, source=source))
+                name = f"{Path(source).stem or 'case'}.yaml"
+                status = f"{what}: {name}, the case as edited, with units."
+                download = dcc.send_string(text, name)
+                return no_update, {"n": n, "errors": {}}, "", status, download
             result = store.run(raw, source=source)
         except InputError as exc:
             path = field_of_error(exc, paths)
             errors = {path: str(exc)} if path else {}
             message = "" if path else str(exc)
             where = "see the field marked" if path else "see above"
-            status = f"Run {n_clicks} not done: {where}. {keep}"
-            return no_update, {"n": n_clicks, "errors": errors}, message, status
+            status = f"{what} not done: {where}.{keep}"
+            return no_update, {"n": n, "errors": errors}, message, status, no_update
         except ConvergenceError as exc:
-            status = f"Run {n_clicks} failed. {keep}"
-            return no_update, {"n": n_clicks, "errors": {}}, f"solver failed: {exc}", status
+            message = f"solver failed: {exc}"
+            return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
         except Exception as exc:  # a bug, not the user's: the app goes on
             log.exception("run failed")
-            text = f"internal error: {type(exc).__name__}: {exc}"
-            return no_update, {"n": n_clicks, "errors": {}}, text, f"Run {n_clicks} failed. {keep}"
+            message = f"internal error: {type(exc).__name__}: {exc}"
+            return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
         data = result.to_json()
         data["case_yaml"] = _dump(raw)
         data["inputs"] = {"source": source, **dict(zip(paths, values, strict=True))}
         before = outlet_temperature((previous or {}).get("summary") or {})
         data["previous_outlet"] = before[1] if before else None
         seconds = time.perf_counter() - started
-        status = f"Run {n_clicks} finished in {seconds:.1f} s: {result.name}"
-        return data, {"n": n_clicks, "errors": {}}, "", status
+        status = f"{what} finished in {seconds:.1f} s: {result.name}"
+        return data, {"n": n, "errors": {}}, "", status, no_update
 
     @app.callback(
         Output("stale-note", "children"),

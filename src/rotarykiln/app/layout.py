@@ -72,7 +72,20 @@ def _case_panel(cases: list[str], default: str | None) -> html.Div:
             html.Div(
                 className="run-bar",
                 children=[
-                    html.Button("Run", id="run-button", className="run-button", n_clicks=0),
+                    html.Div(
+                        className="buttons",
+                        children=[
+                            html.Button("Run", id="run-button", className="run-button", n_clicks=0),
+                            html.Button(
+                                "Save case",
+                                id="save-button",
+                                className="save-button",
+                                n_clicks=0,
+                                title="Download the case as edited (YAML with units)",
+                            ),
+                        ],
+                    ),
+                    dcc.Download(id="case-download"),
                     html.Div(id="run-error", className="error"),
                     html.Div(id="run-status", className="muted small"),
                 ],

@@ -45,7 +45,12 @@ body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", "DejaVu San
 .field-error:not(:empty) { background: #fdecee; border-left: 3px solid #b00020;
                            padding: 3px 6px; }
 .input-row:has(.field-error:not(:empty)) .text-input { border-color: #b00020; }
-.run-button { margin-top: 8px; width: 100%; padding: 9px; font-size: 16px; font-weight: 600;
+.buttons { display: flex; gap: 8px; margin-top: 8px; }
+.save-button { flex: 0 0 auto; padding: 9px 12px; font-size: 14px; color: #6b3d2e;
+               background: #fff; border: 1.5px solid #8c564b; border-radius: 6px;
+               cursor: pointer; }
+.save-button:hover { background: #fbf6f4; }
+.run-button { flex: 1 1 auto; padding: 9px; font-size: 16px; font-weight: 600;
               color: #fff; background: #8c564b; border: none; border-radius: 6px;
               cursor: pointer; }
 .run-button:hover { background: #6b3d2e; }
