@@ -341,8 +341,8 @@ def builtin_reactions(species: SpeciesTable | None = None) -> dict[str, Reaction
 
     Examples
     --------
-    >>> sorted(builtin_reactions())[:3]
-    ['activation_ortiz', 'calcination_equilibrium', 'calcination_luisser']
+    >>> [n for n in sorted(builtin_reactions()) if n.startswith("calcination")]
+    ['calcination_equilibrium', 'calcination_luisser']
     """
     out: dict[str, Reaction] = {}
     for p in sorted(REACTIONS_DIR.glob("*.yaml")):
