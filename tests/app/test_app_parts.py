@@ -143,3 +143,62 @@ def test_a_port_in_use_is_one_line(capsys):
     assert err.startswith(f"rotarykiln app: error: --port: cannot listen on 127.0.0.1:{port}")
     assert err.count("\n") == 1
     assert main(["app", "--port", "70000"]) == 2
+
+
+class _FailingStore:
+    """A run store whose runs fail as a solver or a bug would."""
+
+    def __init__(self, error: Exception):
+        self.error = error
+
+    def run(self, raw, source="case"):
+        raise self.error
+
+
+def _press(store, **kwargs):
+    pytest.importorskip("dash")
+    import yaml
+
+    from rotarykiln.app.callbacks import press
+
+    raw = load_builtin("tscheng_A16")
+    case_data = {"yaml": yaml.safe_dump(raw), "source": "tscheng_A16"}
+    items = present_inputs(raw)
+    ids = [{"type": "main-input", "path": i.path} for i, _ in items]
+    values = [text for _, text in items]
+    args = dict(saving=False, n_run=3, n_save=0, previous={"summary": {}})
+    args.update(kwargs)
+    flags = (args["saving"], args["n_run"], args["n_save"])
+    return press(store, *flags, case_data, values, ids, args["previous"])
+
+
+def test_a_failed_solve_is_one_line_and_keeps_the_results():
+    from dash import no_update
+
+    from rotarykiln.errors import ConvergenceError
+
+    error = ConvergenceError("Newton did not converge at z = 1.2 m", iterations=60)
+    result, errors, message, status, download = _press(_FailingStore(error))
+    assert result is no_update and download is no_update  # what was computed stays
+    assert message == f"solver failed: {error}" and "\n" not in message
+    assert status.startswith("Run 3 failed") and "last successful run" in status
+    assert errors == {"n": 3, "errors": {}}
+
+
+def test_a_bug_in_a_run_is_reported_and_the_app_goes_on():
+    from dash import no_update
+
+    result, _, message, status, _ = _press(_FailingStore(ZeroDivisionError("float division")))
+    assert result is no_update
+    assert message == "internal error: ZeroDivisionError: float division"
+    assert status.startswith("Run 3 failed")
+
+
+def test_save_writes_the_edited_case_without_running():
+    _, errors, message, status, download = _press(
+        _FailingStore(AssertionError("no run when saving")), saving=True, n_run=0, n_save=1
+    )
+    assert message == "" and errors["errors"] == {}
+    assert download["filename"] == "tscheng_A16.yaml"
+    assert "speed: 1.5 rpm" in download["content"]
+    assert status.startswith("Save 1: tscheng_A16.yaml")

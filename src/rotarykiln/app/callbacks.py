@@ -23,7 +23,7 @@ from rotarykiln.case import parse_case
 from rotarykiln.case_io import case_to_yaml
 from rotarykiln.errors import ConvergenceError, InputError
 
-__all__ = ["register_callbacks"]
+__all__ = ["press", "register_callbacks"]
 
 log = logging.getLogger(__name__)
 
@@ -40,6 +40,54 @@ def _validate(raw: dict, source: str, paths: list[str]) -> tuple[dict[str, str],
         path = field_of_error(exc, paths)
         return ({path: str(exc)}, "") if path else ({}, str(exc))
     return {}, ""
+
+
+def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, previous):
+    """Run (or, with ``saving``, save) the loaded case with the fields' values.
+
+    Returns the outputs of the Run and Save buttons: the new result (or ``no_update``: what was
+    computed stays), the errors by field, the message under the buttons, the status line, and
+    the file to download.
+    """
+    n = (n_run or 0) + (n_save or 0)  # a new status line for every press
+    what = f"Save {n_save}" if saving else f"Run {n_run}"
+    keep = "" if saving else " The results shown are those of the last successful run."
+    if not case_data:
+        return no_update, no_update, "Load a case first.", f"{what} not done.", no_update
+    paths = [i["path"] for i in ids]
+    source = case_data["source"]
+    started = time.perf_counter()
+    try:
+        raw = apply_edits(yaml.safe_load(case_data["yaml"]), dict(zip(paths, values, strict=True)))
+        if saving:
+            text = case_to_yaml(parse_case(raw, source=source))
+            name = f"{Path(source).stem or 'case'}.yaml"
+            status = f"{what}: {name}, the case as edited, with units."
+            download = dcc.send_string(text, name)
+            return no_update, {"n": n, "errors": {}}, "", status, download
+        result = store.run(raw, source=source)
+    except InputError as exc:
+        path = field_of_error(exc, paths)
+        errors = {path: str(exc)} if path else {}
+        message = "" if path else str(exc)
+        where = "see the field marked" if path else "see above"
+        status = f"{what} not done: {where}.{keep}"
+        return no_update, {"n": n, "errors": errors}, message, status, no_update
+    except ConvergenceError as exc:
+        message = f"solver failed: {exc}"
+        return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
+    except Exception as exc:  # a bug, not the user's: the app goes on
+        log.exception("run failed")
+        message = f"internal error: {type(exc).__name__}: {exc}"
+        return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
+    data = result.to_json()
+    data["case_yaml"] = _dump(raw)
+    data["inputs"] = {"source": source, **dict(zip(paths, values, strict=True))}
+    before = outlet_temperature((previous or {}).get("summary") or {})
+    data["previous_outlet"] = before[1] if before else None
+    seconds = time.perf_counter() - started
+    status = f"{what} finished in {seconds:.1f} s: {result.name}"
+    return data, {"n": n, "errors": {}}, "", status, no_update
 
 
 def register_callbacks(app, store: RunStore) -> None:
@@ -126,47 +174,7 @@ def register_callbacks(app, store: RunStore) -> None:
     )
     def run(n_run, n_save, case_data, values, ids, previous):
         saving = ctx.triggered_id == "save-button"
-        n = (n_run or 0) + (n_save or 0)  # a new status line for every press
-        what = f"Save {n_save}" if saving else f"Run {n_run}"
-        keep = "" if saving else " The results shown are those of the last successful run."
-        if not case_data:
-            return no_update, no_update, "Load a case first.", f"{what} not done.", no_update
-        paths = [i["path"] for i in ids]
-        source = case_data["source"]
-        started = time.perf_counter()
-        try:
-            raw = apply_edits(
-                yaml.safe_load(case_data["yaml"]), dict(zip(paths, values, strict=True))
-            )
-            if saving:
-                text = case_to_yaml(parse_case(raw, source=source))
-                name = f"{Path(source).stem or 'case'}.yaml"
-                status = f"{what}: {name}, the case as edited, with units."
-                download = dcc.send_string(text, name)
-                return no_update, {"n": n, "errors": {}}, "", status, download
-            result = store.run(raw, source=source)
-        except InputError as exc:
-            path = field_of_error(exc, paths)
-            errors = {path: str(exc)} if path else {}
-            message = "" if path else str(exc)
-            where = "see the field marked" if path else "see above"
-            status = f"{what} not done: {where}.{keep}"
-            return no_update, {"n": n, "errors": errors}, message, status, no_update
-        except ConvergenceError as exc:
-            message = f"solver failed: {exc}"
-            return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
-        except Exception as exc:  # a bug, not the user's: the app goes on
-            log.exception("run failed")
-            message = f"internal error: {type(exc).__name__}: {exc}"
-            return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
-        data = result.to_json()
-        data["case_yaml"] = _dump(raw)
-        data["inputs"] = {"source": source, **dict(zip(paths, values, strict=True))}
-        before = outlet_temperature((previous or {}).get("summary") or {})
-        data["previous_outlet"] = before[1] if before else None
-        seconds = time.perf_counter() - started
-        status = f"{what} finished in {seconds:.1f} s: {result.name}"
-        return data, {"n": n, "errors": {}}, "", status, no_update
+        return press(store, saving, n_run, n_save, case_data, values, ids, previous)
 
     @app.callback(
         Output("stale-note", "children"),
