@@ -69,6 +69,7 @@ def test_annulus_coefficient_laminar_and_turbulent():
         (dict(cp=None), "jacket.cp"),
         (dict(composition="N2:1"), "jacket.cp"),
         (dict(gap=0.0), "jacket.gap"),
+        (dict(eps_drum=1.5), "jacket.eps_drum"),
     ],
 )
 def test_bad_jacket_refused(kw, match):

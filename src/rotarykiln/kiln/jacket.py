@@ -15,9 +15,10 @@ the bed (negative when the wall heats them):
 
 with :math:`\bar T_j` the cell mean of the jacket gas, :math:`P_w = 2\pi R` the drum perimeter,
 :math:`U_{c} P_c` the loss of the jacket casing to ambient, and :math:`U_{jw}` the jacket gas to
-wall coefficient: given, or from the annulus closure :func:`annulus_heat_transfer_coefficient`
-(forced convection in the annular gap, Gnielinski 2009/2015 with the laminar limit of Shah &
-London, plus the drum wall's conduction). ``htc="wall_at_gas"`` is the rotaryPyrolysis
+wall coefficient: given, or from the annulus closure: forced convection in the annular gap
+(:func:`annulus_heat_transfer_coefficient`, Gnielinski 2009 with the laminar limit of Shah &
+London), the radiation of the gas and of the re-radiating casing
+(:func:`jacket_radiation_conductance`), and the drum wall's conduction. ``htc="wall_at_gas"`` is the rotaryPyrolysis
 assumption: no resistance at all, the wall at the jacket gas temperature
 (:math:`T_w = \bar T_j`), which overstates the heat input.
 
@@ -52,6 +53,7 @@ __all__ = [
     "JacketWall",
     "JacketedKiln",
     "annulus_heat_transfer_coefficient",
+    "jacket_radiation_conductance",
     "jacket_balance",
 ]
 
@@ -153,6 +155,61 @@ def annulus_heat_transfer_coefficient(
     return h if np.ndim(h) else float(h)
 
 
+SIGMA = 5.670374419e-8  # W/(m2 K4)
+
+
+def jacket_radiation_conductance(
+    t_gas, t_drum, drum_diameter, gap, *, eps_drum=0.8, eps_casing=0.8, eps_gas=0.0
+):
+    r"""Radiative conductance from the jacket gas to the drum, per metre, W/(m K).
+
+    Two parallel paths (VDI Heat Atlas K1; Hottel's re-radiating surface): the gas radiates to
+    the drum directly, and the casing, heated by the gas by convection and losing little to the
+    outside, re-radiates to the drum. Linearised about the mean temperature
+    :math:`ar T = (T_g + T_d)/2`, with :math:`h_r = 4\sigmaar T^3`:
+
+    .. math:: G_{gas} = arepsilon_g h_r P_d,\qquad
+              G_{casing} = rac{h_r}{rac{1 - arepsilon_d}{arepsilon_d P_d} + rac{1}{P_d}
+              + rac{1 - arepsilon_c}{arepsilon_c P_c}}
+
+    :math:`G_{casing}` is in series with the gas-to-casing convection (see :class:`JacketWall`).
+
+    Parameters
+    ----------
+    t_gas, t_drum : float or array, K
+    drum_diameter : float, m
+        Outer diameter of the drum.
+    gap : float, m
+        Width of the annulus (casing diameter = drum + 2 gap).
+    eps_drum, eps_casing : float, -
+        Emissivities of the drum's outer surface and the casing's inner surface.
+    eps_gas : float or array, -
+        Grey emissivity of the jacket gas over the mean beam length :math:`1.8 s` of the gap.
+
+    Returns
+    -------
+    (G_gas, G_casing) : floats or arrays, W/(m K)
+
+    Examples
+    --------
+    >>> g, c = jacket_radiation_conductance(800.0, 700.0, 0.41, 0.05)
+    >>> round(float(c), 2)   # per metre of kiln
+    84.94
+
+    References
+    ----------
+    VDI Heat Atlas, 2nd ed. (2010) K1; H.C. Hottel, A.F. Sarofim, Radiative Transfer (1967).
+    """
+    tm = 0.5 * (np.asarray(t_gas, dtype=float) + np.asarray(t_drum, dtype=float))
+    hr = 4.0 * SIGMA * tm**3
+    p_d = np.pi * drum_diameter
+    p_c = np.pi * (drum_diameter + 2.0 * gap)
+    r_rad = (
+        (1.0 - eps_drum) / (eps_drum * p_d) + 1.0 / p_d + (1.0 - eps_casing) / (eps_casing * p_c)
+    )
+    return eps_gas * hr * p_d, hr / r_rad
+
+
 @dataclass(frozen=True)
 class Jacket:
     """A heating jacket around the drum (SI units).
@@ -163,8 +220,12 @@ class Jacket:
     e.g. ``"N2:0.72, CO2:0.09, H2O:0.17, O2:0.02"``), its enthalpy from the gas tables.
     ``htc``: the jacket gas to drum coefficient, W/(m2 K) on the drum perimeter; ``"annulus"``
     (default) for :func:`annulus_heat_transfer_coefficient` with ``gap`` (m) and the drum wall
-    conduction (``wall_thickness`` m, ``wall_conductivity`` W/(m K)); ``"wall_at_gas"`` for no
-    resistance (the wall at the jacket gas temperature, rotaryPyrolysis). Casing loss
+    conduction (``wall_thickness`` m, ``wall_conductivity`` W/(m K)), plus with ``radiation``
+    (default True) the radiation of the gas (WSGG of Johansson et al. 2011 when a
+    ``composition`` gives its H2O and CO2) and of the re-radiating casing
+    (:func:`jacket_radiation_conductance`, emissivities ``eps_drum`` and ``eps_casing``);
+    ``"wall_at_gas"`` for no resistance (the wall at the jacket gas temperature,
+    rotaryPyrolysis). Casing loss
     ``casing_u`` (W/(m2 K)) on ``casing_perimeter`` (m; default the drum perimeter, as the
     rotaryPyrolysis script) to the kiln's ambient temperature.
 
@@ -186,6 +247,10 @@ class Jacket:
     wall_conductivity: float = 45.0
     casing_u: float = 0.0
     casing_perimeter: float | None = None
+    radiation: bool = True
+    eps_drum: float = 0.8
+    eps_casing: float = 0.8
+    pressure: float = 101325.0
 
     def __post_init__(self):
         check_positive("jacket.mass_flow", self.mass_flow, "kg/s")
@@ -207,6 +272,10 @@ class Jacket:
         check_nonnegative("jacket.casing_u", self.casing_u, "W/(m2 K)")
         if self.casing_perimeter is not None:
             check_positive("jacket.casing_perimeter", self.casing_perimeter, "m")
+        for name in ("eps_drum", "eps_casing"):
+            v = getattr(self, name)
+            if not (np.isfinite(v) and 0.0 < v <= 1.0):
+                raise InputError(f"jacket.{name}", v, "in (0, 1]")
 
     def _table(self):
         from rotarykiln.materials.gas import gas_table
@@ -273,19 +342,55 @@ class JacketWall:
         parts = [tj, t_in] if j.counter_current else [t_in, tj]
         return np.concatenate(parts, axis=-1)
 
-    def coefficient(self, t_mean):
-        """Jacket gas to inner wall coefficient, W/(m2 K) on the drum perimeter."""
+    def coefficient(self, t_mean, t_wall=None):
+        """Jacket gas to inner wall coefficient, W/(m2 K) on the drum's inner perimeter.
+
+        ``annulus``: convection on the drum's outer surface, in parallel with the gas radiation
+        and with the casing path (convection to the casing in series with its re-radiation),
+        then in series with the drum wall's conduction; ``t_wall`` (K) the drum temperature
+        for the linearised radiation (default: the gas temperature less 50 K)."""
         j = self.jacket
         if self.u == "annulus":
-            h = annulus_heat_transfer_coefficient(
-                j.mass_flow, self.outer_diameter, j.gap, t_mean, check=False
-            )
+            d_o = self.outer_diameter
+            h = annulus_heat_transfer_coefficient(j.mass_flow, d_o, j.gap, t_mean, check=False)
+            p_o = np.pi * d_o
+            g = h * p_o  # W/(m K), convection to the drum
+            if j.radiation:
+                td = t_mean - 50.0 if t_wall is None else t_wall
+                eps_g = self._gas_emissivity(t_mean)
+                g_gas, g_cas = jacket_radiation_conductance(
+                    t_mean,
+                    td,
+                    d_o,
+                    j.gap,
+                    eps_drum=j.eps_drum,
+                    eps_casing=j.eps_casing,
+                    eps_gas=eps_g,
+                )
+                p_c = np.pi * (d_o + 2.0 * j.gap)
+                g = g + g_gas + 1.0 / (1.0 / (h * p_c) + 1.0 / g_cas)
             r_wall = 0.0
             if j.wall_thickness > 0:
                 d_i = self.perimeter / np.pi
-                r_wall = d_i * np.log(self.outer_diameter / d_i) / (2.0 * j.wall_conductivity)
-            return 1.0 / (d_i_over_do(self) / h + r_wall)
+                r_wall = np.log(d_o / d_i) / (2.0 * np.pi * j.wall_conductivity)
+            return 1.0 / (self.perimeter * (1.0 / g + r_wall))
         return self.u
+
+    def _gas_emissivity(self, t_gas):
+        """Grey emissivity of the jacket gas over the beam length 1.8 gap (0 without a
+        composition)."""
+        j = self.jacket
+        if j.composition is None:
+            return 0.0
+        from rotarykiln.heat.gas_radiation import johansson_wsgg_emissivity
+
+        tab = j._table()
+        p_w, p_c = tab.x_h2o * j.pressure, tab.x_co2 * j.pressure
+        if p_w + p_c <= 0:
+            return 0.0
+        return johansson_wsgg_emissivity(
+            np.maximum(t_gas, 500.0), p_w, p_c, 1.8 * j.gap, check=False
+        )
 
     def _terms(self, q_in, t_wall):
         j = self.jacket
@@ -301,7 +406,7 @@ class JacketWall:
             q_jw = -q_in  # all the wall passes on comes from the jacket
             wall_row = self.TIE * self.perimeter * (t_wall[..., 0] - tj)
         else:
-            q_jw = self.coefficient(tj) * self.perimeter * (tj - t_wall[..., 0])
+            q_jw = self.coefficient(tj, t_wall[..., 0]) * self.perimeter * (tj - t_wall[..., 0])
             wall_row = q_jw + q_in
         return wall_row, duty, q_jw, casing
 
@@ -331,11 +436,6 @@ class JacketWall:
         tj = j.inlet_temperature - (j.inlet_temperature - t_wall) * 0.35 * zeta
         tw = 0.5 * (tj + t_wall) if self.u is not None else tj
         return np.stack([tw, tj], axis=-1)
-
-
-def d_i_over_do(wall: JacketWall) -> float:
-    """Ratio of the drum's inner to outer perimeter (the annulus h acts on the outer one)."""
-    return wall.perimeter / (np.pi * wall.outer_diameter)
 
 
 @dataclass(frozen=True)
