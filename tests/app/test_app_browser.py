@@ -76,6 +76,7 @@ def _run(driver, expect_ok: bool = True) -> str:
     status = _status(driver)
     if expect_ok:
         assert "finished" in status, status + " / " + _by(driver, "#run-error").text
+        _wait(driver, lambda d: d.find_elements("id", "outlet-temperature"))
     return status
 
 

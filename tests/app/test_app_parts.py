@@ -178,8 +178,9 @@ def test_a_failed_solve_is_one_line_and_keeps_the_results():
     from rotarykiln.errors import ConvergenceError
 
     error = ConvergenceError("Newton did not converge at z = 1.2 m", iterations=60)
-    result, errors, message, status, download = _press(_FailingStore(error))
-    assert result is no_update and download is no_update  # what was computed stays
+    result, errors, message, status, download, panel = _press(_FailingStore(error))
+    assert result is no_update and panel is no_update  # what was computed stays
+    assert download is no_update
     assert message == f"solver failed: {error}" and "\n" not in message
     assert status.startswith("Run 3 failed") and "last successful run" in status
     assert errors == {"n": 3, "errors": {}}
@@ -188,14 +189,16 @@ def test_a_failed_solve_is_one_line_and_keeps_the_results():
 def test_a_bug_in_a_run_is_reported_and_the_app_goes_on():
     from dash import no_update
 
-    result, _, message, status, _ = _press(_FailingStore(ZeroDivisionError("float division")))
-    assert result is no_update
+    result, _, message, status, _, panel = _press(
+        _FailingStore(ZeroDivisionError("float division"))
+    )
+    assert result is no_update and panel is no_update
     assert message == "internal error: ZeroDivisionError: float division"
     assert status.startswith("Run 3 failed")
 
 
 def test_save_writes_the_edited_case_without_running():
-    _, errors, message, status, download = _press(
+    _, errors, message, status, download, _ = _press(
         _FailingStore(AssertionError("no run when saving")), saving=True, n_run=0, n_save=1
     )
     assert message == "" and errors["errors"] == {}

@@ -23,7 +23,7 @@ from rotarykiln.case import parse_case
 from rotarykiln.case_io import case_to_yaml
 from rotarykiln.errors import ConvergenceError, InputError
 
-__all__ = ["press", "register_callbacks"]
+__all__ = ["press", "register_callbacks", "render"]
 
 log = logging.getLogger(__name__)
 
@@ -42,18 +42,40 @@ def _validate(raw: dict, source: str, paths: list[str]) -> tuple[dict[str, str],
     return {}, ""
 
 
+_KEEP = (no_update, no_update)  # no file, the results panel as it is
+
+
+def render(result: dict) -> list:
+    """The results panel of a run (the data :func:`press` stores)."""
+    raw = yaml.safe_load(result.get("case_yaml") or "{}")
+    figures = []
+    for name, profiles in result["profiles"].items():
+        title = result["name"] if len(result["profiles"]) == 1 else f"{result['name']} ({name})"
+        figures.append(
+            dcc.Graph(
+                id=f"temperature-graph-{name}",
+                figure=temperature_figure(profiles, title, raw),
+                config={"displaylogo": False},
+            )
+        )
+        comp = composition_figure(profiles, title)
+        if comp is not None:
+            figures.append(dcc.Graph(figure=comp, config={"displaylogo": False}))
+    return results_view(result, outlet_temperature(result["summary"]), figures)
+
+
 def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, previous):
     """Run (or, with ``saving``, save) the loaded case with the fields' values.
 
     Returns the outputs of the Run and Save buttons: the new result (or ``no_update``: what was
-    computed stays), the errors by field, the message under the buttons, the status line, and
-    the file to download.
+    computed stays), the errors by field, the message under the buttons, the status line, the
+    file to download, and the results panel (drawn with the status line, in one answer).
     """
     n = (n_run or 0) + (n_save or 0)  # a new status line for every press
     what = f"Save {n_save}" if saving else f"Run {n_run}"
     keep = "" if saving else " The results shown are those of the last successful run."
     if not case_data:
-        return no_update, no_update, "Load a case first.", f"{what} not done.", no_update
+        return no_update, no_update, "Load a case first.", f"{what} not done.", *_KEEP
     paths = [i["path"] for i in ids]
     source = case_data["source"]
     started = time.perf_counter()
@@ -64,7 +86,7 @@ def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, 
             name = f"{Path(source).stem or 'case'}.yaml"
             status = f"{what}: {name}, the case as edited, with units."
             download = dcc.send_string(text, name)
-            return no_update, {"n": n, "errors": {}}, "", status, download
+            return no_update, {"n": n, "errors": {}}, "", status, download, no_update
         result = store.run(raw, source=source)
     except InputError as exc:
         path = field_of_error(exc, paths)
@@ -72,14 +94,14 @@ def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, 
         message = "" if path else str(exc)
         where = "see the field marked" if path else "see above"
         status = f"{what} not done: {where}.{keep}"
-        return no_update, {"n": n, "errors": errors}, message, status, no_update
+        return no_update, {"n": n, "errors": errors}, message, status, *_KEEP
     except ConvergenceError as exc:
         message = f"solver failed: {exc}"
-        return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
+        return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", *_KEEP
     except Exception as exc:  # a bug, not the user's: the app goes on
         log.exception("run failed")
         message = f"internal error: {type(exc).__name__}: {exc}"
-        return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", no_update
+        return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", *_KEEP
     data = result.to_json()
     data["case_yaml"] = _dump(raw)
     data["inputs"] = {"source": source, **dict(zip(paths, values, strict=True))}
@@ -87,7 +109,7 @@ def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, 
     data["previous_outlet"] = before[1] if before else None
     seconds = time.perf_counter() - started
     status = f"{what} finished in {seconds:.1f} s: {result.name}"
-    return data, {"n": n, "errors": {}}, "", status, no_update
+    return data, {"n": n, "errors": {}}, "", status, no_update, render(data)
 
 
 def register_callbacks(app, store: RunStore) -> None:
@@ -160,6 +182,7 @@ def register_callbacks(app, store: RunStore) -> None:
         Output("run-error", "children"),
         Output("run-status", "children"),
         Output("case-download", "data"),
+        Output("results", "children"),
         Input("run-button", "n_clicks"),
         Input("save-button", "n_clicks"),
         State("case-store", "data"),
@@ -191,23 +214,3 @@ def register_callbacks(app, store: RunStore) -> None:
         if now == result.get("inputs"):
             return ""
         return "The inputs have changed since these results: press Run to update them."
-
-    @app.callback(Output("results", "children"), Input("result-store", "data"))
-    def show(result):
-        if not result:
-            return no_update
-        raw = yaml.safe_load(result.get("case_yaml") or "{}")
-        figures = []
-        for name, profiles in result["profiles"].items():
-            title = result["name"] if len(result["profiles"]) == 1 else f"{result['name']} ({name})"
-            figures.append(
-                dcc.Graph(
-                    id=f"temperature-graph-{name}",
-                    figure=temperature_figure(profiles, title, raw),
-                    config={"displaylogo": False},
-                )
-            )
-            comp = composition_figure(profiles, title)
-            if comp is not None:
-                figures.append(dcc.Graph(figure=comp, config={"displaylogo": False}))
-        return results_view(result, outlet_temperature(result["summary"]), figures)

@@ -57,6 +57,8 @@ def _case_panel(cases: list[str], default: str | None) -> html.Div:
                 className="upload",
                 children=html.Div(["or drop a YAML case file here, or ", html.A("choose one")]),
                 multiple=False,
+                # no accept= filter: the drop zone would drop a wrong file silently; the app
+                # says what is wrong with it instead
             ),
             html.Div(id="upload-error", className="error"),
             html.Div(id="case-info", className="case-info"),
