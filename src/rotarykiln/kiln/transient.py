@@ -60,6 +60,8 @@ from rotarykiln.kiln.transient_result import TransientSolution
 
 __all__ = ["TransientResidual", "TransientKiln", "simulate"]
 
+#: Flow (over the feed) below which a reactant's rate law of order < 1 is regularised.
+RATE_FLOOR = 1e-6
 #: Temperature step of the numerical heat capacity dh/dT, K.
 CP_STEP = 0.05
 
@@ -81,6 +83,11 @@ class TransientResidual(KilnResidual):
                 "profile of the case)",
             )
         super().__init__(kiln, n_cells)
+        # reactants fed and never made (the steady model's square-root unknowns): their rate
+        # laws of order < 1 are made Lipschitz below a flow of RATE_FLOOR x the feed
+        self.regularised = np.array([s in self.bed_var for s in self.bed_names]) & np.isin(
+            self.bed_names, [v for v, m in zip(self.bed_var, self.sqrt_mask, strict=True) if m]
+        )
         self.bed_var, self.gas_var = self.bed_names, self.gas_names
         self.nb, self.ng = len(self.bed_names), len(self.gas_names)
         self.bed_pos = np.arange(self.nb)
@@ -91,6 +98,19 @@ class TransientResidual(KilnResidual):
         self.q_ref = 1.0
         self._kiln0, self._exchange0 = self.kiln, self.exchange
         self._heat_release0 = kiln.heat_release
+
+    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo=None, tb_out=None):
+        """The steady model's rates, with the flow of each regularised reactant seen by its
+        rate law as :math:`q^2/(q + \\epsilon)` (:math:`\\epsilon` = :data:`RATE_FLOOR` x the
+        feed): a rate of order 1/2 then stays Lipschitz as the reactant runs out (a
+        square root has an infinite slope at complete conversion, which an implicit
+        integrator's Newton iteration cannot follow). Above 100 epsilon the rate changes by
+        < 1 %, and the stoichiometry (so every balance) is untouched."""
+        if self.regularised.any():
+            q = np.maximum(qb_out, 0.0)
+            eps = RATE_FLOOR * self.bed_scale
+            qb_out = np.where(self.regularised, q * q / (q + eps), q)
+        return super().rates(tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo, tb_out)
 
     def set_inputs(self, u: Inputs) -> None:
         """Point the residual at the boundary inputs ``u`` (feed, gas inlet, speed)."""
