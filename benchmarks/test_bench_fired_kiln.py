@@ -12,13 +12,13 @@ import pytest
 
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.run import heat_kiln_from_case
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.solve import solve_kiln
 
 
 @pytest.fixture(scope="module")
 def barr_t4():
-    kiln, _ = heat_kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("barr_T4")))
     assert kiln.flame is not None and kiln.flame.combustion == "instant"
     solve_kiln(kiln, 100)  # first-call costs (imports, caches) outside the timing
     return kiln

@@ -3,12 +3,12 @@
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln import solve_kiln
-from rotarykiln.kiln.run import heat_kiln_from_case
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.tscheng import tscheng_kiln, validate_all
 
 
 def test_bench_flame_solve_radiation_on(benchmark):
-    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     assert kiln.closures.radiation
     sol = benchmark(solve_kiln, kiln, cells)
     assert abs(sol.energy_closure) < 1e-6

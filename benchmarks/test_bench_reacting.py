@@ -9,9 +9,10 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.reacting import reacting_kiln_from_case, reacting_sweep_model
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.studies import grid, run_sweep
+from rotarykiln.studies.models import kiln_model
 
 
 def _data(name):
@@ -19,14 +20,14 @@ def _data(name):
 
 
 def test_bench_reacting_solve_limestone_100_cells(benchmark):
-    kiln, _ = reacting_kiln_from_case(parse_case(_data("limestone_calcination")))
+    kiln, _ = kiln_from_case(parse_case(_data("limestone_calcination")))
     solve_kiln(kiln, 100)  # gas tables (Cantera) built once, outside the timing
     sol = benchmark(solve_kiln, kiln, 100)
     assert sol.conversion("CaCO3")[-1] > 0.999
 
 
 def test_bench_reacting_solve_charcoal_100_cells(benchmark):
-    kiln, _ = reacting_kiln_from_case(parse_case(_data("charcoal_activation")))
+    kiln, _ = kiln_from_case(parse_case(_data("charcoal_activation")))
     solve_kiln(kiln, 100)
     sol = benchmark(solve_kiln, kiln, 100)
     assert sol.burn_off > 0
@@ -34,7 +35,7 @@ def test_bench_reacting_solve_charcoal_100_cells(benchmark):
 
 @pytest.fixture(scope="module")
 def limestone_fired():
-    kiln, _ = reacting_kiln_from_case(parse_case(_data("limestone_fired")))
+    kiln, _ = kiln_from_case(parse_case(_data("limestone_fired")))
     solve_kiln(kiln, 100)  # gas tables (Cantera) built once, outside the timing
     return kiln
 
@@ -56,13 +57,13 @@ def test_bench_reacting_solve_fired_1600_cells(benchmark, limestone_fired):
 def test_bench_reacting_sweep_100_cases_2_processes(benchmark):
     design = grid(
         {
-            "chemistry.residence_time": [f"{t} s" for t in range(3000, 10000, 700)],
-            "chemistry.gas.steam_flow": [f"{0.001 * k:.3f} kg/s" for k in range(1, 11)],
+            "bed.residence_time": [f"{t} s" for t in range(3000, 10000, 700)],
+            "gas.steam_flow": [f"{0.001 * k:.3f} kg/s" for k in range(1, 11)],
         }
     )
     res = benchmark.pedantic(
         run_sweep,
-        args=(reacting_sweep_model, _data("charcoal_activation"), design),
+        args=(kiln_model, _data("charcoal_activation"), design),
         kwargs={"max_workers": 2},
         rounds=1,
         iterations=1,

@@ -16,7 +16,7 @@ import yaml
 import rotarykiln.kiln.residence as residence
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.reacting import reacting_kiln_from_case
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.solve import solve_kiln
 
 
@@ -24,7 +24,7 @@ from rotarykiln.kiln.solve import solve_kiln
 def solved(request):
     data = yaml.safe_load(builtin_case_path(request.param).read_text(encoding="utf-8"))
     case = parse_case(data)
-    kiln, cells = reacting_kiln_from_case(case)
+    kiln, cells = kiln_from_case(case)
     sol = solve_kiln(kiln, cells)
     seen = {}
     real = residence.kiln_segregated_conversion

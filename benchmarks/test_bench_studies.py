@@ -9,7 +9,7 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.studies import grid, run_sweep
 from rotarykiln.studies.design import latin_hypercube
 from rotarykiln.studies.examples import first_order_conversion, trivial_model
-from rotarykiln.studies.models import heat_model
+from rotarykiln.studies.models import kiln_model
 
 BASE = {"reaction": {"rate_constant": "0.01 1/s"}, "operation": {"residence_time": "100 s"}}
 N_TRIVIAL = 2000
@@ -63,14 +63,14 @@ def test_bench_heat_sweep_1000_cases_2_processes(benchmark):
     design = latin_hypercube(
         [
             "operation.speed=uniform(1 rpm, 3 rpm)",
-            "heat.gas.inlet_temperature=uniform(500 K, 570 K)",
-            "heat.gas.flow=uniform(20 kg/h, 30 kg/h)",
+            "gas.temperature=uniform(500 K, 570 K)",
+            "gas.flow=uniform(20 kg/h, 30 kg/h)",
         ],
         1000,
         seed=1,
     )
     res = benchmark.pedantic(
-        lambda: run_sweep(heat_model, base, design, max_workers=2, store=tempfile.mkdtemp()),
+        lambda: run_sweep(kiln_model, base, design, max_workers=2, store=tempfile.mkdtemp()),
         rounds=1,
         iterations=1,
     )

@@ -127,34 +127,37 @@ def test_misspelt_key_is_reported_before_the_missing_one(path, typo, message):
     assert str(info.value).startswith(message)
 
 
-HEAT = {"solid": "sand", "lining": [{"material": "fireclay_brick", "thickness": "50 mm"}]}
+WALL = {"lining": [{"material": "fireclay_brick", "thickness": "50 mm"}]}
 
 
 def test_misspelt_key_in_a_list_item_lists_the_accepted_keys():
-    # the accepted keys used to be empty for keys inside list items (heat.lining.N)
-    data = dict(GOOD, heat={**HEAT, "lining": [{"material": "fireclay_brick", "thicknes": "5 cm"}]})
+    # the accepted keys used to be empty for keys inside list items (wall.lining.N)
+    data = dict(GOOD, wall={"lining": [{"material": "fireclay_brick", "thicknes": "5 cm"}]})
     with pytest.raises(InputError) as info:
         parse_case(data)
     assert str(info.value).startswith(
-        'heat.lining.0.thicknes: unknown key, did you mean "thickness"? '
+        'wall.lining.0.thicknes: unknown key, did you mean "thickness"? '
         "(accepted keys: material, thickness, absent)"
     )
 
 
 @pytest.mark.parametrize(
-    ("heat", "message"),
+    ("edit", "message"),
     [
         # used to be reported as "material.solid" / "lining.material" at run time
-        ({**HEAT, "solid": "sandd"}, 'heat.solid: "sandd" is not one of charcoal, lime,'),
         (
-            {**HEAT, "lining": [{"material": "fire brick", "thickness": "50 mm"}]},
-            'heat.lining.0.material: "fire brick" is not one of carbon_steel,',
+            {"material": {"solid": "sandd"}, "wall": WALL},
+            'material.solid: "sandd" is not one of charcoal, lime,',
+        ),
+        (
+            {"wall": {"lining": [{"material": "fire brick", "thickness": "50 mm"}]}},
+            'wall.lining.0.material: "fire brick" is not one of carbon_steel,',
         ),
     ],
 )
-def test_unknown_library_names_are_reported_at_their_path(heat, message):
+def test_unknown_library_names_are_reported_at_their_path(edit, message):
     with pytest.raises(InputError) as info:
-        parse_case(dict(GOOD, heat=heat))
+        parse_case(dict(GOOD, **edit))
     assert str(info.value).startswith(message)
 
 

@@ -37,7 +37,7 @@ HELPER = re.compile(
     r"^(load_|plot|read_|write_|run|get_|set_|with_|parse_|builtin|as_|check_|register|animate|"
     r"raster|parity|format_|failing|grid$|one_at_a_time|si_value|retort_|solid_names|"
     r"lining_material_names|parquet_|.*_table$|to_si$|default_|rtd_arrays|element_|reaction_from|"
-    r"ahmad_chapter5|chapter5|heat_model|transport_model|warn_if|get_model|dirac_inlet|"
+    r"ahmad_chapter5|chapter5|kiln_model|transport_model|warn_if|get_model|dirac_inlet|"
     r"step_inlet|pulse_inlet|predict_|peclet_from_case|fit_|analyse_tracer|replicate_|solve_bed|"
     r"design_chart|scott1986_|first_order|ortiz_isothermal|kiln_segregated|onset_window|"
     r"as_profile)"

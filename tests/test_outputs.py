@@ -36,7 +36,7 @@ def test_no_plots_writes_no_figure(tmp_path):
 
     assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
     names = {p.name for p in tmp_path.iterdir()}
-    assert "heat_profiles.csv" in names and "summary.json" in names
+    assert "kiln_profiles.csv" in names and "summary.json" in names
     assert not any(n.endswith((".png", ".svg", ".pdf")) for n in names)
 
 
@@ -50,9 +50,9 @@ def test_a_failing_figure_keeps_the_tables(tmp_path, monkeypatch, capsys):
 
     monkeypatch.setattr(matplotlib.figure.Figure, "savefig", broken)
     assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path)]) == 0
-    assert "figure heat_profiles.png not written: renderer exploded" in capsys.readouterr().err
+    assert "figure kiln_profiles.png not written: renderer exploded" in capsys.readouterr().err
     names = {p.name for p in tmp_path.iterdir()}
-    assert {"heat_profiles.csv", "heat_summary.json", "summary.json"} <= names
+    assert {"kiln_profiles.csv", "kiln_summary.json", "summary.json"} <= names
     assert not any(n.endswith(".png") for n in names)
 
 
@@ -61,9 +61,9 @@ def test_a_second_run_into_the_same_folder_leaves_no_file_of_the_first(tmp_path)
 
     mine = tmp_path / "notes.txt"  # a user's own file in the folder is never touched
     mine.write_text("keep me")
-    assert cli.main(["run", "limestone_fired", "--out", str(tmp_path), "--no-plots"]) == 0
-    assert (tmp_path / "reacting_profiles.csv").is_file()
-    assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
+    assert cli.main(["run", "limestone_fired", "--out", str(tmp_path)]) == 0
+    assert (tmp_path / "kiln_rtd.png").is_file()  # the residence-time effects of a reacting bed
+    assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path)]) == 0
     names = {p.name for p in tmp_path.iterdir()}
-    assert "heat_profiles.csv" in names and "reacting_profiles.csv" not in names
+    assert "kiln_profiles.csv" in names and "kiln_rtd.png" not in names
     assert mine.read_text() == "keep me"

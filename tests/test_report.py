@@ -84,12 +84,12 @@ def barr_t4(tmp_path_factory):
 def test_report_has_every_section(barr_t4):
     _, report, _ = barr_t4
     assert {"case", "warnings", "summary", "figures", "files", "version", "case-hash"} <= report.ids
-    assert {"summary-case", "summary-heat"} <= report.ids
+    assert {"summary-case", "summary-kiln"} <= report.ids
 
 
 def test_outlet_temperature_shown_is_the_solvers(barr_t4):
     _, report, summary = barr_t4
-    key = "heat_bed_outlet_temperature_K"
+    key = "kiln_bed_outlet_temperature_K"
     shown, exact = report.cells[key]
     assert float(exact) == summary[key]
     assert shown == f"{summary[key]:.5g}"
@@ -106,7 +106,7 @@ def test_every_summary_value_is_in_the_report(barr_t4):
 
 def test_figures_are_embedded_and_nothing_is_fetched(barr_t4):
     out, report, _ = barr_t4
-    assert sorted(report.figures) == ["cross_section.png", "heat_profiles.png", "regime_map.png"]
+    assert sorted(report.figures) == ["cross_section.png", "kiln_profiles.png", "regime_map.png"]
     assert report.external == []
 
 
@@ -140,7 +140,7 @@ def test_a_figure_left_by_an_earlier_run_is_not_embedded(tmp_path):
 @pytest.mark.parametrize(
     ("key", "expected"),
     [
-        ("heat_bed_outlet_temperature_K", ("heat bed outlet temperature", "K")),
+        ("kiln_bed_outlet_temperature_K", ("kiln bed outlet temperature", "K")),
         ("feed_kg_h", ("feed", "kg/h")),
         ("speed_rpm", ("speed", "rpm")),
         ("regime", ("regime", "")),
@@ -158,8 +158,8 @@ def test_demo_writes_the_report(tmp_path):
     assert "report.html" in printed.getvalue()
     report = _Report()
     report.feed((out / "report.html").read_text(encoding="utf-8"))
-    assert {"case", "warnings", "summary", "figures", "files", "summary-heat"} <= report.ids
-    assert "heat_profiles.png" in report.figures and report.external == []
+    assert {"case", "warnings", "summary", "figures", "files", "summary-kiln"} <= report.ids
+    assert "kiln_profiles.png" in report.figures and report.external == []
     summary = json.loads((out / "summary.json").read_text())
-    key = "heat_bed_outlet_temperature_K"
+    key = "kiln_bed_outlet_temperature_K"
     assert report.cells[key][0] == f"{summary[key]:.5g}"

@@ -47,7 +47,7 @@ def test_a_misspelt_top_level_section_and_a_nested_key_are_rejected():
     data["operaton"] = data.pop("operation")
     assert not VALIDATOR.is_valid(data)
     data = _case("barr_T4")
-    data["heat"]["burner"]["primary_air"]["temprature"] = "300 K"
+    data["burner"]["primary_air"]["temprature"] = "300 K"
     assert not VALIDATOR.is_valid(data)
 
 

@@ -17,7 +17,7 @@ import numpy as np  # noqa: E402
 from rotarykiln.case import load_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
 from rotarykiln.kiln import solve_kiln  # noqa: E402
-from rotarykiln.kiln.run import heat_kiln_from_case  # noqa: E402
+from rotarykiln.kiln.build import kiln_from_case  # noqa: E402
 from rotarykiln.kiln.tscheng import (  # noqa: E402
     Z_GAS_BED,
     load_tscheng_runs,
@@ -35,7 +35,7 @@ def main():
     sol = solve_kiln(tscheng_kiln("A16"))
     ax = sol.plot()
     ax.axvspan(1.25, 1.78, color="0.9", zorder=0)
-    ax.figure.savefig(OUT / "heat_tscheng_A16.png", dpi=90, bbox_inches="tight")
+    ax.figure.savefig(OUT / "kiln_tscheng_A16.png", dpi=90, bbox_inches="tight")
     plt.close(ax.figure)
 
     # 2. parity of all 44 runs, and the per-run table
@@ -61,11 +61,11 @@ def main():
         ax.set_ylabel(f"predicted {key} temperature (K)")
         ax.set_title(f"{key}: red = 1.25-1.78 m window, grey = other points")
     fig.tight_layout()
-    fig.savefig(OUT / "heat_tscheng_parity.png", dpi=80)
+    fig.savefig(OUT / "kiln_tscheng_parity.png", dpi=80)
     plt.close(fig)
 
     # 3. flame case, radiation on and off
-    kiln, cells = heat_kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     on = solve_kiln(kiln, cells)
     off = solve_kiln(replace(kiln, closures=replace(kiln.closures, radiation=False)), cells)
     fig, ax = plt.subplots(figsize=(7, 4.2))
@@ -77,7 +77,7 @@ def main():
     ax.set_ylabel("temperature (K)")
     ax.set_title("UBC-geometry pilot kiln, natural gas burner at z = 5.5 m")
     ax.legend(fontsize=7, ncol=2)
-    fig.savefig(OUT / "heat_flame_radiation.png", dpi=90, bbox_inches="tight")
+    fig.savefig(OUT / "kiln_flame_radiation.png", dpi=90, bbox_inches="tight")
     plt.close(fig)
 
     print("| run | bed window | gas window | bed all | gas all | wall all |")

@@ -14,7 +14,7 @@ import yaml  # noqa: E402
 
 from rotarykiln.case import parse_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
-from rotarykiln.kiln.reacting import reacting_kiln_from_case  # noqa: E402
+from rotarykiln.kiln.build import kiln_from_case  # noqa: E402
 from rotarykiln.kiln.residence import residence_time_effects  # noqa: E402
 from rotarykiln.kiln.solve import solve_kiln  # noqa: E402
 from rotarykiln.outputs import write_frame_atomic  # noqa: E402
@@ -30,7 +30,7 @@ def _data(name):
 
 def solve(data):
     case = parse_case(data)
-    kiln, cells = reacting_kiln_from_case(case)
+    kiln, cells = kiln_from_case(case)
     return case, kiln, solve_kiln(kiln, cells)
 
 
@@ -45,13 +45,13 @@ for name in ("charcoal_activation", "limestone_calcination"):
     rtd = residence_time_effects(case, kiln, sol)
     print("  ", rtd.summary())
     ax = rtd.plot()
-    ax.figure.savefig(OUT / f"reacting_rtd_{name}.png", dpi=80)
+    ax.figure.savefig(OUT / f"kiln_rtd_{name}.png", dpi=80)
     plt.close(ax.figure)
 
 # residence-time effects with incomplete calcination: less gas (0.018 kg/s), Sherritt Pe and Pe 20
 for pe in (None, 20.0):
     data = _data("limestone_calcination")
-    data["chemistry"]["gas"]["inlet_flow"] = "0.018 kg/s"
+    data["gas"]["flow"] = "0.018 kg/s"
     if pe is not None:
         data["chemistry"]["peclet"] = pe
     case, kiln, sol = solve(data)
@@ -59,7 +59,7 @@ for pe in (None, 20.0):
     print("limestone 0.018 kg/s gas, Pe", pe, rtd.summary())
     if pe is not None:
         ax = rtd.plot()
-        ax.figure.savefig(OUT / "reacting_rtd_limestone_partial.png", dpi=80)
+        ax.figure.savefig(OUT / "kiln_rtd_limestone_partial.png", dpi=80)
         plt.close(ax.figure)
 
 # limestone with the CO2-equilibrium rate
@@ -70,7 +70,7 @@ _, _, sol = solve(data)
 print("limestone equilibrium:", {k: v for k, v in sol.summary().items() if "CaCO3" in k})
 print("  bed max", sol.t_bed_nodes.max(), "gas out", sol.gas_outlet_temperature)
 fig = sol.plot()
-fig.savefig(OUT / "reacting_limestone_equilibrium.png", dpi=80)
+fig.savefig(OUT / "kiln_limestone_equilibrium.png", dpi=80)
 plt.close(fig)
 
 # seed 004 chapter 5 on the kiln model
@@ -82,10 +82,10 @@ keep = [c for c in res.frame.columns if c.endswith("[SI]")] + [
     "bed_max_temperature_K",
     "gas_outlet_temperature_K",
 ]
-write_frame_atomic(OUT / "reacting_chapter5.csv", res.frame[keep], index=False)
+write_frame_atomic(OUT / "kiln_chapter5.csv", res.frame[keep], index=False)
 print(chapter5_directions(res))
 fig = res.plot(outputs=["burn_off_percent", "production_percent"])
 fig = fig if hasattr(fig, "savefig") else fig.figure
 fig.set_size_inches(14, 5)
-fig.savefig(OUT / "reacting_chapter5.png", dpi=70)
+fig.savefig(OUT / "kiln_chapter5.png", dpi=70)
 plt.close(fig)

@@ -22,7 +22,8 @@ Example case::
       bulk_density: 1500 kg/m3
       repose_angle: 35 deg
 
-Sections of the physics packages (``bed``, ``transport``, ``rtd``, ``heat`` ...) are optional
+Sections of the physics packages (``bed``, ``transport``, ``rtd``, ``gas``, ``burner``, ``wall``,
+``chemistry`` ...) are optional
 fields of :class:`Case`.
 """
 
@@ -49,10 +50,11 @@ __all__ = [
     "Bed",
     "Burner",
     "BurnerAir",
-    "Heat",
-    "HeatClosures",
-    "HeatGas",
-    "HeatMeasurements",
+    "Closures",
+    "Gas",
+    "Measurements",
+    "Solver",
+    "Wall",
     "LiningLayer",
     "Case",
     "Chemistry",
@@ -180,21 +182,14 @@ class Kiln(Section):
 
 
 class Operation(Section):
-    """Operating point: rotation speed and solids feed (mass flow)."""
+    """Operating point: rotation speed, solids feed (mass flow) and its temperature, and the
+    gas direction (``counter_current``: the gas flows against the solids, the usual kiln;
+    false: with them, as in co-current dryers and pyrolysis kilns)."""
 
     speed: RotationRate
     feed: MassFlow | None = None
-
-
-class Material(Section):
-    """The bulk solid."""
-
-    name: str = "solid"
-    bulk_density: Density | None = None
-    repose_angle: ReposeAngle | None = None
-    static_repose_angle: ReposeAngle | None = None
-    particle_size: Length | None = None
-    wall_friction: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    feed_temperature: Temperature = 298.15
+    counter_current: bool = True
 
 
 def _int_in(low: int, high: int):
@@ -218,19 +213,13 @@ def _int_in(low: int, high: int):
 
 
 Cells = _int_in(4, 20_000)
-"""Cells along the kiln (heat, chemistry): the models need 4; 20,000 is 1 mm in a 20 m kiln."""
+"""Cells along the kiln (the kiln model): at least 4; 20,000 is 1 mm in a 20 m kiln."""
 
 
 def _positive_number(v: Any) -> float:
     if isinstance(v, bool) or not isinstance(v, int | float) or not v > 0:
         raise PydanticCustomError("number", "{value} is not a number > 0", {"value": v})
     return float(v)
-
-
-class Bed(Section):
-    """A fixed bed fill, used by models that do not compute the bed profile."""
-
-    fill: FillFraction
 
 
 def _library_name(filename: str):
@@ -282,7 +271,7 @@ def _k_coefficients(v: Any) -> list[float]:
 
 
 class LiningLayer(Section):
-    """One lining layer (``heat.lining``, ``chemistry.lining``): a library material (or one
+    """One lining layer (``wall.lining``): a library material (or one
     given inline), a thickness and the stretches (from z, to z) where it is absent."""
 
     material: LiningMaterialName | LiningMaterialSpec
@@ -386,21 +375,14 @@ class Burner(Section):
         return fuel, prim, sec
 
 
-class HeatGas(Section):
-    """Inlet gas of the ``heat`` section: flow, temperature and composition (mole fractions)."""
+class Closures(Section):
+    """Closure names of the kiln model (see docs/heat.md). ``preset``: ``default``
+    (:class:`rotarykiln.kiln.model.Closures`: Tscheng & Watkinson convection, Li 2005 covered
+    wall, radiation on, Johansson 2011 gas emissivity, the solid's given conductivity) or
+    ``seed004`` (Gorog 1982 gas-bed and gas-wall, Tscheng & Watkinson covered wall: the
+    closures of seed 004's reacting kilns); a key given overrides the preset's choice."""
 
-    flow: MassFlow | None = None
-    inlet_temperature: Temperature | None = None
-    composition: Annotated[str, BeforeValidator(_fuel_composition)] = (
-        "O2:0.2095, N2:0.7808, AR:0.0097"
-    )
-
-
-class HeatClosures(Section):
-    """Closure names of the heat model (see docs/heat.md). An omitted key takes the model's
-    default (:class:`rotarykiln.kiln.model.Closures`: Tscheng & Watkinson convection, Li 2005
-    covered wall, radiation on, Johansson 2011 gas emissivity, the solid's given conductivity)."""
-
+    preset: Literal["default", "seed004"] = "default"
     gas_wall: str | None = None
     gas_bed: str | None = None
     covered_wall: str | None = None
@@ -412,7 +394,7 @@ class HeatClosures(Section):
     )
 
 
-class HeatMeasurements(Section):
+class Measurements(Section):
     """Measured profiles to overlay on the figure and score the solution against."""
 
     z_gas: list[Position] = []
@@ -448,34 +430,6 @@ class HeaterZoneSection(Section):
     end: Position
     power: Power | None = None
     shell_temperature: Temperature | None = None
-
-
-class Heat(Section):
-    """Steady heat transfer along the kiln (gas, bed, wall, shell); see docs/heat.md.
-
-    ``axial_dispersion``: the bed's axial dispersion inside the balances, from the correlation
-    of Sherritt et al. (2003) (``sherritt2003``, default), ``plug`` flow, or a bed Peclet
-    number u L / D (a number)."""
-
-    solid: SolidName = "sand"
-    solid_inlet_temperature: Temperature = 298.15
-    fill: FillFraction | list[FillFraction] | None = None
-    counter_current: bool = True
-    gas: HeatGas = HeatGas()
-    burner: Burner | None = None
-    lining: list[LiningLayer]
-    ambient_temperature: Temperature = 298.15
-    wind_speed: Velocity = 0.0
-    wall_emissivity: Fraction | None = None
-    shell_emissivity: Fraction | None = None
-    cells: Cells = 100
-    closures: HeatClosures = HeatClosures()
-    measurements: HeatMeasurements | None = None
-    heaters: list[HeaterZoneSection] = []
-    axial_dispersion: (
-        Literal["sherritt2003", "plug"]
-        | Annotated[float, BeforeValidator(lambda v: _positive_number(v))]
-    ) = "sherritt2003"
 
 
 class TransportWeir(Section):
@@ -580,81 +534,133 @@ def _reaction_names(v: Any) -> list:
     return v
 
 
-class ChemistryFeed(Section):
-    """Solids entering the kiln: temperature and composition (bed-species mass fractions)."""
+class Gas(Section):
+    """Gas entering at the gas inlet end without a burner (a hot-air or flue-gas kiln, a sweep
+    gas): mass ``flow``, inlet ``temperature``, and its composition as mole fractions
+    (``composition``, default air) or as mass fractions (``mass_fractions``).
+    ``steam_flow``: a constant steam flow seen by steam reactions (seed 004); ``emissivity_a``,
+    ``emissivity_b_per_K``, ``emissivity_minimum``: a gas emissivity line
+    max(a + b T, minimum) instead of the closures' gas emissivity model."""
 
-    temperature: Temperature
-    composition: _composition("bed")
-
-
-class ChemistryGas(Section):
-    """Gas entering at the gas inlet: temperature, mass flow, composition (mass fractions)."""
-
-    inlet_temperature: Temperature | None = None
-    inlet_flow: MassFlow | None = None
-    composition: _composition("gas") | None = None
+    flow: MassFlow | None = None
+    temperature: Temperature | None = None
+    composition: Annotated[str, BeforeValidator(_fuel_composition)] | None = None
+    mass_fractions: _composition("gas") | None = None
     steam_flow: MassFlow | None = None
     emissivity_a: Fraction | None = None
     emissivity_b_per_K: float | None = None
     emissivity_minimum: Fraction | None = None
     pressure: Pressure = 101325.0
 
+    @model_validator(mode="after")
+    def _one_composition(self):
+        if self.composition is not None and self.mass_fractions is not None:
+            raise PydanticCustomError(
+                "number", "give composition (mole fractions) or mass_fractions, not both", {}
+            )
+        return self
 
-class ChemistrySolid(Section):
-    """Bed properties used by the reacting model of seed 004."""
 
-    specific_heat: SpecificHeat | None = None
-    thermal_conductivity: ThermalConductivity | None = None
-    emissivity: Fraction | None = None
-    critical_moisture: Fraction = 0.1
+class Wall(Section):
+    """The kiln wall: ``lining`` layers (inner to outer, the shell included) with the shell's
+    loss by convection (``wind_speed``) and radiation to ``ambient_temperature``, or a constant
+    loss coefficient ``U`` (W/(m2 K), referred to the inner wall: q = U pi D (T_wall - T_amb)).
+    ``emissivity``: inner wall surface (default: the first layer's); ``shell_emissivity``;
+    ``heaters``: electric heater zones on the shell."""
 
-
-class WallLoss(Section):
-    """Shell loss per metre q = U pi D (T_wall - T_ambient), U referred to the inner wall."""
-
-    U: HeatTransferCoefficient
+    lining: list[LiningLayer] | None = None
+    U: HeatTransferCoefficient | None = None
     ambient_temperature: Temperature = 298.15
+    wind_speed: Velocity = 0.0
+    emissivity: Fraction | None = None
+    shell_emissivity: Fraction | None = None
+    heaters: list[HeaterZoneSection] = []
+
+    @model_validator(mode="after")
+    def _lining_or_u(self):
+        if (self.lining is None) == (self.U is None):
+            raise PydanticCustomError(
+                "number",
+                "give lining (layers) or U (a constant loss coefficient, W/(m2 K)), one of them",
+                {},
+            )
+        return self
+
+
+class Solver(Section):
+    """Discretisation of the kiln model: ``cells`` along the kiln."""
+
+    cells: Cells = 100
 
 
 class Chemistry(Section):
-    """Reacting kiln (rotarykiln.chemistry, rotarykiln.kiln.reacting): reactions (built-in names
-    or user reactions as mappings), feed and gas compositions, seed-004 inputs, closures (default
-    seed 004's), ``cells``, ``onset_width`` (K, ramp below sharp onset temperatures),
-    ``peclet`` (bed axial dispersion; default from the Sherritt et al. 2003 correlation).
-    Wall: ``wall: wall_u`` (one wall temperature, loss U pi D (T_w - T_a), ``wall_loss``) or
-    ``wall: lining`` (the heat model's wall: ``lining`` layers with k(T), shell loss to
-    ``ambient_temperature`` with ``wind_speed``, ``shell_emissivity``); default ``lining`` when
-    a lining is given, else ``wall_u``. ``burner``: a burner at the gas inlet instead of
-    ``gas.inlet_temperature``/``inlet_flow``/``composition`` (instant burn-out: the products of
-    complete combustion enter at their adiabatic temperature)."""
+    """Reactions of the bed and the freeboard (rotarykiln.chemistry): built-in names
+    (chemistry/reactions/*.yaml) or reactions given inline; the feed composition is
+    ``material.composition``.
+
+    ``onset_width`` (K): a linear onset ramp for reactions with a sharp onset temperature;
+    ``kirchhoff``: heats of reaction follow Kirchhoff's law with the species' c_p;
+    ``peclet``: the bed Peclet number of the residence-time effects (default: the ``rtd:``
+    section or the Sherritt correlation); ``expected``: the source's printed results (shown
+    beside the solution, never used by the solve)."""
 
     reactions: Annotated[list, BeforeValidator(_reaction_names)]
-    feed: ChemistryFeed
-    gas: ChemistryGas = ChemistryGas()
-    burner: Burner | None = None
-    counter_current: bool = True
-    heaters: list[HeaterZoneSection] = []
-    solid: ChemistrySolid = ChemistrySolid()
-    residence_time: Time | None = None
-    wall: Literal["wall_u", "lining"] | None = None
-    wall_loss: WallLoss | None = None
-    lining: list[LiningLayer] | None = None
-    ambient_temperature: Temperature | None = None
-    wind_speed: Velocity = 0.0
-    wall_emissivity: Fraction | None = None
-    shell_emissivity: Fraction | None = None
-    wall_temperature_guess: Temperature | None = None
-    gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
     kirchhoff: bool = False
-    closures: HeatClosures | None = None
-    cells: Cells = 100
     onset_width: Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))] = 0.0
+    gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
     peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    expected: dict[str, Any] = {}
+
+
+class Material(Section):
+    """The bulk solid: its name, bulk properties for the transport models, and for the kiln
+    model the library ``solid`` whose properties (c_p(T) with its phases, conductivity,
+    emissivity) the bed takes, constant overrides (``specific_heat``, ``thermal_conductivity``,
+    ``emissivity``), and the feed ``composition`` (mass fractions of the bed species of
+    ``chemistry``; needed with a ``chemistry:`` section)."""
+
+    name: str = "solid"
+    solid: SolidName | None = None
+    bulk_density: Density | None = None
+    repose_angle: ReposeAngle | None = None
+    static_repose_angle: ReposeAngle | None = None
+    particle_size: Length | None = None
+    wall_friction: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    specific_heat: SpecificHeat | None = None
+    thermal_conductivity: ThermalConductivity | None = None
+    emissivity: Fraction | None = None
+    composition: _composition("bed") | None = None
+
+
+class Bed(Section):
+    """How the bed fills the kiln when no ``transport:`` section computes it: a ``fill``
+    fraction (a number, or a list of values evenly spaced from the solids inlet to the
+    discharge) or a solids ``residence_time`` (the fill then follows from the feed).
+    ``axial_dispersion``: the bed's axial dispersion in the kiln model's balances, from the
+    correlation of Sherritt et al. (2003) (``sherritt2003``, default), ``plug`` flow, or a bed
+    Peclet number u L / D (a number)."""
+
+    fill: FillFraction | list[FillFraction] | None = None
+    residence_time: Time | None = None
     axial_dispersion: (
         Literal["sherritt2003", "plug"]
         | Annotated[float, BeforeValidator(lambda v: _positive_number(v))]
-    ) = "plug"
-    expected: dict[str, Any] = {}
+    ) = "sherritt2003"
+
+    @model_validator(mode="after")
+    def _fill_or_time(self):
+        if self.fill is not None and self.residence_time is not None:
+            raise PydanticCustomError(
+                "number", "give fill or residence_time, not both (one sets the other)", {}
+            )
+        return self
+
+    @property
+    def mean_fill(self) -> float | None:
+        """The fill as one number (the mean of a list), or None when not given."""
+        if self.fill is None:
+            return None
+        return float(sum(self.fill) / len(self.fill)) if isinstance(self.fill, list) else self.fill
 
 
 class RTDLifters(Section):
@@ -696,10 +702,22 @@ class Case(Section):
     material: Material = Material()
     bed: Bed | None = None
     transport: Transport | None = None
-    heat: Heat | None = None
+    gas: Gas | None = None
+    burner: Burner | None = None
+    wall: Wall | None = None
     chemistry: Chemistry | None = None
+    closures: Closures = Closures()
+    measurements: Measurements | None = None
+    solver: Solver = Solver()
     transverse: TransverseSection | None = None
     rtd: RTD | None = None
+
+    @property
+    def has_kiln_model(self) -> bool:
+        """Whether the case asks for the kiln model: a heat source (``gas``, ``burner``, heater
+        zones on the ``wall``) or a ``chemistry`` section."""
+        heated = self.wall is not None and bool(self.wall.heaters)
+        return heated or any(s is not None for s in (self.gas, self.burner, self.chemistry))
 
 
 def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:

@@ -306,7 +306,7 @@ def dump_case(case: BaseModel) -> dict[str, Any]:
     >>> case = load_case(builtin_case_path("barr_T4"))
     >>> data = dump_case(case)
     >>> data["operation"]
-    {'speed': '1.5 rpm', 'feed': '62 kg/h'}
+    {'speed': '1.5 rpm', 'feed': '62 kg/h', 'feed_temperature': '298.15 K'}
     >>> parse_case(data) == case
     True
     """

@@ -73,10 +73,11 @@ def case_summary(case) -> dict[str, Any]:
     }
     if case.operation.feed is not None:
         out["feed_kg_h"] = case.operation.feed * 3600
-    if case.bed is not None:
-        cs = CrossSection.from_fill(case.bed.fill, radius)
+    fill = case.bed.mean_fill if case.bed is not None else None
+    if fill is not None:
+        cs = CrossSection.from_fill(fill, radius)
         out.update({k: float(v) for k, v in cs.as_dict().items() if k != "radius_m"})
-        reg = regime_summary(radius, case.operation.speed, case.bed.fill)
+        reg = regime_summary(radius, case.operation.speed, fill)
         out.update({k: reg[k] for k in ("regime", "criterion", "regime_by_henein")})
     return out
 

@@ -20,7 +20,7 @@ from typing import Any
 __all__ = ["render_html_report", "split_unit", "write_html_report"]
 
 # key suffix -> unit, longest first (the naming convention of the summaries: "length_m",
-# "heat_gas_outlet_flow_kg_s", "speed_rpm"...)
+# "kiln_gas_outlet_flow_kg_s", "speed_rpm"...)
 _UNIT_SUFFIXES = [
     ("_J_kg_K", "J/(kg K)"),
     ("_percent", "%"),
@@ -74,8 +74,8 @@ def split_unit(key: str) -> tuple[str, str]:
 
     Examples
     --------
-    >>> split_unit("heat_gas_outlet_flow_kg_s")
-    ('heat gas outlet flow', 'kg/s')
+    >>> split_unit("kiln_gas_outlet_flow_kg_s")
+    ('kiln gas outlet flow', 'kg/s')
     >>> split_unit("rtd_dispersion_m2_s")
     ('rtd dispersion', 'm2/s')
     >>> split_unit("onset_T_bed_K_drying_ahmad")
@@ -105,7 +105,7 @@ def _shown(value: Any) -> str:
 def _rows(table: Mapping[str, Any]) -> list[dict[str, str]]:
     keys = [str(k) for k in table]
     first = {k.split("_", 1)[0] for k in keys}
-    # the prefix every key of a section's summary shares ("heat_", "reacting_") is not repeated
+    # the prefix every key of a section's summary shares ("kiln_", "transport_") is not repeated
     prefix = f"{first.pop()}_" if len(first) == 1 and all("_" in k for k in keys) else ""
     rows = []
     for key, value in table.items():
@@ -146,7 +146,7 @@ def render_html_report(
     case : Case
         The validated case that was run.
     sections : mapping
-        Section name (``"case"``, ``"heat"``, ``"chemistry"``...) -> its flat summary dict.
+        Section name (``"case"``, ``"kiln"``, ``"transport"``...) -> its flat summary dict.
     warnings : iterable of str
         The warnings raised during the run (shown once each, in order).
     figures : iterable of path

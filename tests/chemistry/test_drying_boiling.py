@@ -24,7 +24,7 @@ from rotarykiln.chemistry.drying import (
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
 from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
 from rotarykiln.errors import InputError, OutOfRangeWarning
-from rotarykiln.kiln.reacting import run_reacting_case
+from rotarykiln.kiln.run import run_kiln_case
 
 T_BOIL = 373.15
 DRYING = {
@@ -40,10 +40,10 @@ def _case(drying="drying", feed_temperature=None):
     data = yaml.safe_load(builtin_case_path("limestone_calcination").read_text(encoding="utf-8"))
     data["chemistry"]["reactions"] = [drying, "calcination_luisser"]
     if feed_temperature is not None:
-        data["chemistry"]["feed"]["temperature"] = feed_temperature
+        data["operation"]["feed_temperature"] = feed_temperature
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OutOfRangeWarning)  # Gorog gas-wall Re (documented)
-        return run_reacting_case(parse_case(data))
+        return run_kiln_case(parse_case(data))
 
 
 def _moisture_fraction(sol):

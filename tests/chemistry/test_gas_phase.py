@@ -11,7 +11,7 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.gas_phase import R_GAS, gas_arrhenius_rate, shift_equilibrium_constant
 from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.reacting import run_reacting_case
+from rotarykiln.kiln.run import run_kiln_case
 
 P = 101325.0
 
@@ -99,14 +99,14 @@ def test_gas_reaction_yaml_refused(change, match):
 def test_co_in_the_kiln_gas_burns_in_the_freeboard_with_closed_balances():
     d = yaml.safe_load(builtin_case_path("limestone_calcination").read_text())
     ch = d["chemistry"]
-    ch["gas"]["composition"] = {"N2": 0.70, "CO2": 0.12, "H2O": 0.10, "O2": 0.05, "CO": 0.03}
-    base = run_reacting_case(parse_case(d))
+    d["gas"]["mass_fractions"] = {"N2": 0.70, "CO2": 0.12, "H2O": 0.10, "O2": 0.05, "CO": 0.03}
+    base = run_kiln_case(parse_case(d))
     ch["reactions"] = ch["reactions"] + [
         "co_oxidation_westbrook_dryer",
         "water_gas_shift_jones_lindstedt",
         "water_gas_shift_reverse",
     ]
-    sol = run_reacting_case(parse_case(d))
+    sol = run_kiln_case(parse_case(d))
     s = sol.summary()
     assert abs(s["energy_balance_closure"]) < 1e-6
     assert abs(s["element_balance_closure"]) < 1e-8

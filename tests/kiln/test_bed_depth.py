@@ -9,30 +9,31 @@ import yaml
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.reacting import reacting_kiln_from_case, run_reacting_case
+from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.run import run_kiln_case
 from rotarykiln.transport.kramers import kramers_profile
 
 
 def _case(feed=None, **transport):
     d = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
-    d["chemistry"].pop("residence_time")
+    d["bed"].pop("residence_time")
     d["material"]["repose_angle"] = "35 deg"
     d["transport"] = {"model": "kramers", "dam_height": "40 mm", **transport}
     if feed is not None:
-        d["chemistry"]["feed"]["composition"] = feed
+        d["material"]["composition"] = feed
     return d
 
 
 @pytest.fixture(scope="module")
 def calcining():
-    return run_reacting_case(parse_case(_case()))
+    return run_kiln_case(parse_case(_case()))
 
 
 def test_inert_bed_depth_equals_the_transport_model():
     # an inert feed keeps its flow: the in-solve depth must be the Kramers ODE's profile
     case = parse_case(_case(feed={"inert": 1.0}))
-    sol = run_reacting_case(case)
-    kiln, _ = reacting_kiln_from_case(case)
+    sol = run_kiln_case(case)
+    kiln, _ = kiln_from_case(case)
     b = kiln.bed_depth
     p = kramers_profile(
         case.operation.feed,
@@ -65,7 +66,7 @@ def test_calcination_thins_the_bed_and_balances_close(calcining):
 
 
 def test_mesh_doubling(calcining):
-    fine = run_reacting_case(parse_case(_case()), n_cells=200)
+    fine = run_kiln_case(parse_case(_case()), n_cells=200)
     coarse = calcining
     d_c = coarse.fluxes["bed_depth"]
     d_f = 0.5 * (fine.fluxes["bed_depth"][::2] + fine.fluxes["bed_depth"][1::2])
@@ -90,4 +91,4 @@ def test_refused(transport, match):
         else:
             d["transport"][k] = v
     with pytest.raises(InputError, match=match):
-        reacting_kiln_from_case(parse_case(d))
+        kiln_from_case(parse_case(d))

@@ -9,13 +9,13 @@ import pytest
 
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.reacting import reacting_kiln_from_case
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.kiln.tscheng import tscheng_kiln
 
 
 def _limestone():
-    kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path("limestone_fired")))
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("limestone_fired")))
     return kiln
 
 
@@ -62,14 +62,14 @@ def test_case_key_of_the_reacting_kiln():
     import yaml
 
     from rotarykiln.case import parse_case
-    from rotarykiln.kiln.reacting import run_reacting_case
+    from rotarykiln.kiln.run import run_kiln_case
 
     d = yaml.safe_load(builtin_case_path("limestone_calcination").read_text())
-    kiln, _ = reacting_kiln_from_case(parse_case(d))
+    kiln, _ = kiln_from_case(parse_case(d))
     assert kiln.bed_dispersion == 0.0  # seed 004: plug flow by default
-    d["chemistry"]["axial_dispersion"] = 20
+    d["bed"]["axial_dispersion"] = 20
     case = parse_case(d)
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     assert kiln.bed_dispersion == pytest.approx(kiln.bed_velocity * kiln.length / 20)
-    s = run_reacting_case(case).summary()
+    s = run_kiln_case(case).summary()
     assert abs(s["energy_balance_closure"]) < 1e-6 and s["element_balance_closure"] < 1e-8

@@ -9,13 +9,13 @@ from rotarykiln import cli
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.flame import AirStream, Burner, fire
-from rotarykiln.kiln.run import heat_kiln_from_case
 
 
 def _barr(**burner):
     data = yaml.safe_load(builtin_case_path("barr_T4").read_text())
-    b = data["heat"]["burner"]
+    b = data["burner"]
     for key, value in burner.items():
         if value is None:
             b.pop(key, None)
@@ -27,23 +27,23 @@ def _barr(**burner):
 @pytest.mark.parametrize(
     ("change", "match"),
     [
-        ({"primary_air": None, "secondary_air": None}, "heat.burner: fuel without air"),
+        ({"primary_air": None, "secondary_air": None}, "burner: fuel without air"),
         (
             {"primary_air": {"flow": "0 L/s"}, "secondary_air": {"flow": "0 L/s"}},
             "air flows sum to 0",
         ),
-        ({"fuel_flow": None}, "heat.burner.fuel_flow: missing"),
+        ({"fuel_flow": None}, "burner.fuel_flow: missing"),
         ({"fuel_flow": "0 L/s"}, "fuel_flow.*zero"),
         ({"fuel_flow": "-1 kg/h"}, "fuel_flow.*negative"),
-        ({"fuel": "CH4:0.9, N2:0.05"}, "heat.burner.fuel.*summing to 0.95"),
-        ({"fuel": "C2H8:1"}, "heat.burner.fuel.*unknown species"),
-        ({"fuel": "CH4:1, N2:nan"}, "heat.burner.fuel.*not a finite number"),
+        ({"fuel": "CH4:0.9, N2:0.05"}, "burner.fuel.*summing to 0.95"),
+        ({"fuel": "C2H8:1"}, "burner.fuel.*unknown species"),
+        ({"fuel": "CH4:1, N2:nan"}, "burner.fuel.*not a finite number"),
         ({"reference_temperature": None}, "fuel_flow.*unstated temperature"),
         ({"fuel_flow": "2 Sm3/h"}, "fuel_flow.*ambiguous"),
-        ({"fuel_temperature": "-5 K"}, "heat.burner.fuel_temperature"),
+        ({"fuel_temperature": "-5 K"}, "burner.fuel_temperature"),
         ({"secondary_air": {"flow": "40 L/s", "temperature": "-3 K"}}, "secondary_air"),
-        ({"combustion": "magic"}, "heat.burner.combustion"),
-        ({"flame_length": "0 m"}, "heat.burner.flame_length"),
+        ({"combustion": "magic"}, "burner.combustion"),
+        ({"flame_length": "0 m"}, "burner.flame_length"),
     ],
 )
 def test_refused_at_load(change, match):
@@ -55,27 +55,27 @@ def test_refused_at_load(change, match):
 def test_ar_and_AR_both_accepted():
     for spelling in ("Ar", "AR"):
         case = parse_case(_barr(fuel=f"CH4:0.99, {spelling}:0.01"))
-        assert "AR" in case.heat.burner.fuel
+        assert "AR" in case.burner.fuel
 
 
 def test_flame_override_longer_than_the_kiln():
-    with pytest.raises(InputError, match="heat.burner.flame_length.*kiln length"):
-        heat_kiln_from_case(parse_case(_barr(combustion="burnout", flame_length="7 m")))
+    with pytest.raises(InputError, match="burner.flame_length.*kiln length"):
+        kiln_from_case(parse_case(_barr(combustion="burnout", flame_length="7 m")))
 
 
 def test_burnout_without_flame_length_or_nozzle():
     with pytest.raises(InputError, match="burner.flame_length.*nozzle_diameter"):
-        heat_kiln_from_case(parse_case(_barr(combustion="burnout")))
+        kiln_from_case(parse_case(_barr(combustion="burnout")))
 
 
 def test_normal_volume_flow_is_accepted():
     data = _barr(reference_temperature=None)
-    b = data["heat"]["burner"]
+    b = data["burner"]
     b["fuel_flow"] = "7.092 Nm3/h"  # 1.97 NL/s
     b["primary_air"] = {"flow": "62.64 Nm3/h"}
     b["secondary_air"] = {"flow": "154.8 Nm3/h"}
     case = parse_case(data)
-    kiln, _ = heat_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     assert kiln.flame.fuel_lhv == pytest.approx(70.5e3, rel=2e-3)
     assert case is not None
 
@@ -85,7 +85,7 @@ def test_cli_exit_code_2_and_one_line(tmp_path, capsys):
     path.write_text(yaml.safe_dump(_barr(fuel="C2H8:1")))
     assert cli.main(["run", str(path), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip()
-    assert "heat.burner.fuel" in err and "Traceback" not in err and len(err.splitlines()) == 1
+    assert "burner.fuel" in err and "Traceback" not in err and len(err.splitlines()) == 1
 
 
 def test_burner_dataclass_checks():
@@ -99,6 +99,6 @@ def test_burner_dataclass_checks():
 
 def test_heat_gas_composition_checked_at_load():
     data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
-    data["heat"]["gas"]["composition"] = "O2:0.21, N2:nan"
-    with pytest.raises(InputError, match="heat.gas.composition"):
+    data["gas"]["composition"] = "O2:0.21, N2:nan"
+    with pytest.raises(InputError, match="gas.composition"):
         parse_case(data)

@@ -7,7 +7,7 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.reacting import run_reacting_case
+from rotarykiln.kiln.run import run_kiln_case
 
 
 @pytest.mark.parametrize(
@@ -16,8 +16,8 @@ from rotarykiln.kiln.reacting import run_reacting_case
 def test_limestone_with_the_default_drying_law(feed_temperature, cells):
     d = yaml.safe_load(builtin_case_path("limestone_calcination").read_text())
     d["chemistry"]["reactions"] = ["drying", "calcination_luisser"]
-    d["chemistry"]["feed"]["temperature"] = feed_temperature
-    sol = run_reacting_case(parse_case(d), cells)
+    d["operation"]["feed_temperature"] = feed_temperature
+    sol = run_kiln_case(parse_case(d), cells)
     s = sol.summary()
     assert abs(s["energy_balance_closure"]) < 1e-6 and s["element_balance_closure"] < 1e-8
     water = sol.bed_flows["H2O(l)"]

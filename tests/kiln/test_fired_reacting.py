@@ -9,7 +9,8 @@ from rotarykiln.case import load_case, parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.species import default_species
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.reacting import reacting_kiln_from_case, run_reacting_case
+from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.run import run_kiln_case
 
 SP = default_species()
 M_CO2, M_CACO3 = SP["CO2"].molar_mass, SP["CaCO3"].molar_mass
@@ -17,12 +18,12 @@ M_CO2, M_CACO3 = SP["CO2"].molar_mass, SP["CaCO3"].molar_mass
 
 @pytest.fixture(scope="module")
 def solution():
-    return run_reacting_case(load_case(builtin_case_path("limestone_fired")))
+    return run_kiln_case(load_case(builtin_case_path("limestone_fired")))
 
 
 def test_calcines_fully_and_its_co2_leaves_with_the_flue_gas(solution):
     case = load_case(builtin_case_path("limestone_fired"))
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     feed_caco3 = case.operation.feed
     co2_in = kiln.gas_in["CO2"]
     assert solution.summary()["conversion_CaCO3"] == pytest.approx(1.0, abs=1e-6)
@@ -47,22 +48,22 @@ def test_energy_sheet_of_the_fired_limestone_kiln(solution):
 
 
 def test_burner_gas_enters_at_the_adiabatic_temperature():
-    kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path("limestone_fired")))
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("limestone_fired")))
     assert 1800.0 < kiln.gas_inlet_temperature < 1950.0  # natural gas, 40 % excess air
     assert set(kiln.gas_in) <= {"N2", "O2", "CO2", "H2O", "CO", "H2", "CH4"}
 
 
 def test_burner_and_gas_inlet_together_refused():
     data = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
-    data["chemistry"]["gas"]["inlet_temperature"] = "1800 K"
-    with pytest.raises(InputError, match="chemistry.gas.inlet_flow.*burner"):
-        reacting_kiln_from_case(parse_case(data))
+    data["gas"]["temperature"] = "1800 K"
+    with pytest.raises(InputError, match="gas.flow.*burner"):
+        kiln_from_case(parse_case(data))
 
 
 def test_co_current_variant_converges_and_closes():
     data = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
-    data["chemistry"]["counter_current"] = False
-    sol = run_reacting_case(parse_case(data))
+    data["operation"]["counter_current"] = False
+    sol = run_kiln_case(parse_case(data))
     s = sol.summary()
     assert abs(s["energy_balance_closure"]) < 1e-6
     assert abs(s["element_balance_closure"]) < 1e-8
@@ -74,7 +75,7 @@ def test_co_current_variant_converges_and_closes():
 
 def test_co_current_inert_reacting_equals_heat_model_direction():
     # the counter-current solution is unchanged by the co-current code path
-    a = run_reacting_case(load_case(builtin_case_path("limestone_fired")))
+    a = run_kiln_case(load_case(builtin_case_path("limestone_fired")))
     assert a.gas_outlet_temperature == a.t_gas_nodes[0]
 
 

@@ -80,18 +80,18 @@ def test_heaters_from_a_case_file():
 
     from rotarykiln.case import parse_case
     from rotarykiln.cases import builtin_case_path
-    from rotarykiln.kiln.run import run_heat_case
+    from rotarykiln.kiln.run import run_kiln_case
 
     data = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
-    data["heat"]["heaters"] = [
+    data["wall"]["heaters"] = [
         {"start": "1 m", "end": "2 m", "power": "0.5 kW"},
         {"start": "0.2 m", "end": "0.6 m", "shell_temperature": "150 degC"},
     ]
-    sol = run_heat_case(parse_case(data))
+    sol = run_kiln_case(parse_case(data))
     s = sol.summary()
     assert s["energy_electric_heating_W"] > 500.0  # the set-point zone adds its own power
     held = (sol.z > 0.2) & (sol.z < 0.6)
     assert np.allclose(sol.t_shell[held], 423.15, atol=1e-6)
-    data["heat"]["heaters"] = [{"start": "1 m", "end": "2 m"}]
+    data["wall"]["heaters"] = [{"start": "1 m", "end": "2 m"}]
     with pytest.raises(InputError, match="heaters"):
-        run_heat_case(parse_case(data))
+        run_kiln_case(parse_case(data))

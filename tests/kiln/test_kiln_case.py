@@ -1,4 +1,4 @@
-"""The heat: section of case files and the run_heat_case / heat_runner entry points."""
+"""Kiln cases (gas, burner, wall sections) and the run_kiln_case / kiln_runner entry points."""
 
 import json
 
@@ -10,7 +10,8 @@ import yaml
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.run import heat_kiln_from_case, heat_runner, run_heat_case
+from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.run import kiln_runner, run_kiln_case
 from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.kiln.tscheng import insulation_thickness, tscheng_kiln
 
@@ -24,8 +25,8 @@ def _data(name):
 def test_builtin_tscheng_case_equals_module_setup():
     # the YAML case and the programmatic set-up of run A16 describe the same kiln
     data = _data("tscheng_A16")
-    assert data["heat"]["lining"][2]["thickness"] == f"{insulation_thickness() * 1000:.2f} mm"
-    a = run_heat_case(parse_case(data))
+    assert data["wall"]["lining"][2]["thickness"] == f"{insulation_thickness() * 1000:.2f} mm"
+    a = run_kiln_case(parse_case(data))
     b = solve_kiln(tscheng_kiln("A16"))
     assert np.max(np.abs(a.t_bed_nodes - b.t_bed_nodes)) < 0.05  # radius 0.1885/2 vs 0.09425
     assert a.measurements["t_bed"].tolist() == [341, 356, 374, 417, 473]
@@ -33,24 +34,26 @@ def test_builtin_tscheng_case_equals_module_setup():
 
 def test_flame_case_runs_and_writes(tmp_path):
     case = parse_case(_data("ubc_pilot_flame"))
-    summary = heat_runner(case, tmp_path)
-    for name in ("heat_profiles.csv", "heat_summary.json", "heat_profiles.png"):
+    summary = kiln_runner(case, tmp_path)
+    for name in ("kiln_profiles.csv", "kiln_summary.json", "kiln_profiles.png"):
         assert (tmp_path / name).is_file()
-    assert abs(summary["heat_energy_balance_closure"]) < 1e-6
-    assert json.loads((tmp_path / "heat_summary.json").read_text())["heat_cells"] == 100
-    assert (tmp_path / "heat_profiles.png").stat().st_size < 200_000
+    assert abs(summary["kiln_energy_balance_closure"]) < 1e-6
+    assert json.loads((tmp_path / "kiln_summary.json").read_text())["kiln_cells"] == 100
+    assert (tmp_path / "kiln_profiles.png").stat().st_size < 200_000
 
 
 @pytest.mark.parametrize(
     "path, value, message",
     [
-        (("heat", "lining", 0, "thickness"), "0 mm", "heat.lining.0.thickness"),
-        (("heat", "gas", "flow"), "-3 kg/h", "heat.gas.flow"),
-        (("heat", "wall_emissivity"), 1.5, "heat.wall_emissivity"),
-        (("heat", "closures", "radiation"), "maybe", "heat.closures.radiation"),
+        (("wall", "lining", 0, "thickness"), "0 mm", "wall.lining.0.thickness"),
+        (("gas", "flow"), "-3 kg/h", "gas.flow"),
+        (("wall", "emissivity"), 1.5, "wall.emissivity"),
+        (("closures", "radiation"), "maybe", "closures.radiation"),
+        (("closures", "preset"), "seed005", "closures.preset"),
+        (("operation", "counter_current"), "sideways", "operation.counter_current"),
     ],
 )
-def test_bad_heat_sections(path, value, message):
+def test_bad_kiln_sections(path, value, message):
     data = _data("tscheng_A16")
     node = data
     for key in path[:-1]:
@@ -60,49 +63,76 @@ def test_bad_heat_sections(path, value, message):
         parse_case(data)
 
 
-def test_bad_heat_values_at_model_level():
+def test_bad_kiln_values_at_model_level():
     data = _data("tscheng_A16")
-    data["heat"]["closures"] = {"gas_wall": "dittus"}
-    with pytest.raises(InputError, match="heat.closures.gas_wall"):
-        heat_kiln_from_case(parse_case(data))
+    data["closures"] = {"gas_wall": "dittus"}
+    with pytest.raises(InputError, match="closures.gas_wall"):
+        kiln_from_case(parse_case(data))
     data = _data("tscheng_A16")
-    data["heat"]["gas"]["flow"] = "0 kg/h"
-    with pytest.raises(InputError, match="heat.gas_flow"):
-        heat_kiln_from_case(parse_case(data))
+    data["gas"]["flow"] = "0 kg/h"
+    with pytest.raises(InputError, match="gas.flow"):
+        kiln_from_case(parse_case(data))
     data = _data("tscheng_A16")
-    data["heat"]["lining"][0]["material"] = "cheese"
+    data["wall"]["lining"][0]["material"] = "cheese"
     # caught by the case schema now, at its full path
-    with pytest.raises(InputError, match=r"heat\.lining\.0\.material"):
-        heat_kiln_from_case(parse_case(data))
+    with pytest.raises(InputError, match=r"wall\.lining\.0\.material"):
+        kiln_from_case(parse_case(data))
     data = _data("tscheng_A16")
     del data["operation"]["feed"]
     with pytest.raises(InputError, match="operation.feed"):
-        heat_kiln_from_case(parse_case(data))
+        kiln_from_case(parse_case(data))
 
 
-def test_cli_run_with_heat_runner(tmp_path, monkeypatch, capsys):
-    # how the lead wires the section: RUNNERS["heat"] = "rotarykiln.kiln.run:heat_runner"
+def test_cli_run_writes_the_kiln_files(tmp_path, capsys):
     from rotarykiln import cli
-    from rotarykiln.commands import run as run_cmd
 
-    monkeypatch.setitem(run_cmd.RUNNERS, "heat", "rotarykiln.kiln.run:heat_runner")
     case_path = builtin_case_path("tscheng_A16")
     code = cli.main(["run", str(case_path), "--out", str(tmp_path), "--json"])
     assert code == 0
     summary = json.loads(capsys.readouterr().out)
-    assert abs(summary["heat_energy_balance_closure"]) < 1e-6
-    assert (tmp_path / "heat_profiles.csv").is_file()
-    assert (tmp_path / "heat_profiles.png").is_file()
+    assert abs(summary["kiln_energy_balance_closure"]) < 1e-6
+    assert (tmp_path / "kiln_profiles.csv").is_file()
+    assert (tmp_path / "kiln_profiles.png").is_file()
 
 
-def test_heat_kiln_is_picklable():
+def test_fired_kiln_is_picklable():
     # studies may ship kilns to worker processes (dask)
     import pickle
 
     data = _data("ubc_pilot_flame")
-    data["heat"]["burner"].update(combustion="burnout", flame_length="1 m")
-    kiln, _ = heat_kiln_from_case(parse_case(data))
+    data["burner"].update(combustion="burnout", flame_length="1 m")
+    kiln, _ = kiln_from_case(parse_case(data))
     clone = pickle.loads(pickle.dumps(kiln))
     assert clone.heat_release == kiln.heat_release
     z = np.linspace(0, kiln.length, 7)
     assert np.array_equal(clone.heat_release_profile(z), kiln.heat_release_profile(z))
+
+
+def test_wall_needs_lining_or_u_and_gas_or_burner():
+    data = _data("tscheng_A16")
+    data["wall"]["U"] = "5 W/m2/K"
+    with pytest.raises(InputError, match="wall: give lining .* or U"):
+        parse_case(data)
+    data = _data("tscheng_A16")
+    del data["wall"]
+    with pytest.raises(InputError, match="wall: missing"):
+        kiln_from_case(parse_case(data))
+    data = _data("tscheng_A16")
+    data["gas"]["mass_fractions"] = {"N2": 1.0}
+    with pytest.raises(InputError, match="composition .* or mass_fractions, not both"):
+        parse_case(data.copy() | {"gas": {**data["gas"], "composition": "N2:1"}})
+    data = _data("ubc_pilot_flame")
+    data["gas"] = {"flow": "10 kg/h", "temperature": "900 K"}
+    with pytest.raises(InputError, match="gas.flow.*burner"):
+        kiln_from_case(parse_case(data))
+
+
+def test_gas_by_mass_or_mole_fractions_builds_the_same_kiln():
+    data = _data("tscheng_A16")
+    a, _ = kiln_from_case(parse_case(data))
+    total = sum(a.gas_in.values())
+    data["gas"]["mass_fractions"] = {k: v / total for k, v in a.gas_in.items()}
+    b, _ = kiln_from_case(parse_case(data))
+    assert a.gas_in.keys() == b.gas_in.keys()
+    for k in a.gas_in:
+        assert b.gas_in[k] == pytest.approx(a.gas_in[k], rel=1e-9)

@@ -11,7 +11,7 @@ from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln import Closures, solve_kiln
-from rotarykiln.kiln.run import heat_kiln_from_case
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.tscheng import tscheng_kiln
 from rotarykiln.materials.lining import Layer, load_lining_material
 
@@ -28,7 +28,7 @@ def _finite(sol):
 
 @pytest.fixture(scope="module")
 def flame_kiln():
-    kiln, _ = heat_kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     return kiln
 
 
@@ -118,17 +118,17 @@ def test_unconverged_raises_with_location():
 
 def test_bad_inputs():
     base = tscheng_kiln("A16")
-    with pytest.raises(InputError, match="heat.gas_flow"):
+    with pytest.raises(InputError, match="gas.flow"):
         tscheng_kiln("A16", gas_flow=0.0)
-    with pytest.raises(InputError, match="heat.solids_flow"):
+    with pytest.raises(InputError, match="operation.feed"):
         tscheng_kiln("A16", solids_flow=-1.0)
-    with pytest.raises(InputError, match="wall_emissivity"):
+    with pytest.raises(InputError, match="wall.emissivity"):
         replace(base, wall_emissivity=1.5)
     with pytest.raises(InputError, match="shell_emissivity"):
         replace(base, shell_emissivity=0.0)
     with pytest.raises(InputError, match="thickness"):
         replace(base, layers=(Layer(load_lining_material("carbon_steel"), 0.0),))
-    with pytest.raises(InputError, match="heat.closures.gas_wall"):
+    with pytest.raises(InputError, match="closures.gas_wall"):
         Closures(gas_wall="nusselt")
     with pytest.raises(InputError, match="fill"):
         solve_kiln(replace(base, fill=0.0))

@@ -1,6 +1,5 @@
 """The reacting kiln: species + energy balances in one Newton solve (kiln/reacting*.py)."""
 
-import copy
 import json
 
 import matplotlib
@@ -15,15 +14,11 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.calcination import R_GAS  # noqa: F401  (module imports cleanly)
 from rotarykiln.chemistry.plugflow import integrate_plug_flow
 from rotarykiln.errors import ConvergenceError, InputError
-from rotarykiln.kiln.reacting import (
-    reacting_kiln_from_case,
-    reacting_runner,
-    reacting_sweep_model,
-    run_reacting_case,
-)
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.residence import KilnRTD, residence_time_effects
-from rotarykiln.kiln.run import heat_runner
+from rotarykiln.kiln.run import kiln_runner, run_kiln_case
 from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.studies.models import kiln_model
 
 matplotlib.use("Agg")
 
@@ -34,12 +29,12 @@ def _data(name):
 
 @pytest.fixture(scope="module")
 def limestone():
-    return run_reacting_case(parse_case(_data("limestone_calcination")))
+    return run_kiln_case(parse_case(_data("limestone_calcination")))
 
 
 @pytest.fixture(scope="module")
 def charcoal():
-    return run_reacting_case(parse_case(_data("charcoal_activation")))
+    return run_kiln_case(parse_case(_data("charcoal_activation")))
 
 
 def _mass_in_out(sol):
@@ -78,7 +73,7 @@ def test_charcoal_burn_off_matches_plug_flow_through_its_own_profile(charcoal):
     # consistency of the coupled solve with an ODE integration of the same rates along the
     # converged temperature profile (same steam flow, conductance): discretisation only
     case = parse_case(_data("charcoal_activation"))
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     sol = charcoal
     chord = sol.fluxes["q_gas_bed_conv"] / sol.fluxes["h_gb"] / (sol.t_gas - sol.t_bed)
     pf = integrate_plug_flow(
@@ -99,7 +94,7 @@ def test_charcoal_burn_off_matches_plug_flow_through_its_own_profile(charcoal):
 
 def test_mesh_refinement_changes_little():
     case = parse_case(_data("limestone_calcination"))
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     a = solve_kiln(kiln, 100)
     b = solve_kiln(kiln, 200)
     assert abs(a.bed_outlet_temperature - b.bed_outlet_temperature) < 5.0
@@ -110,9 +105,9 @@ def test_mesh_refinement_changes_little():
 def test_equilibrium_rate_is_zero_where_co2_exceeds_equilibrium():
     data = _data("limestone_calcination")
     data["chemistry"]["reactions"] = ["drying_ahmad", "calcination_equilibrium"]
-    sol = run_reacting_case(parse_case(data))
+    sol = run_kiln_case(parse_case(data))
     case = parse_case(data)
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     g = sol.gas_flows
     mm = {s: kiln.mechanism.species[s].molar_mass for s in g}
     # the rate of cell j sees the gas leaving the cell (face j)
@@ -131,7 +126,7 @@ def test_equilibrium_rate_is_zero_where_co2_exceeds_equilibrium():
 
 def test_convergence_error_names_cell_and_equation():
     case = parse_case(_data("limestone_calcination"))
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     with pytest.raises(ConvergenceError) as exc:
         solve_kiln(kiln, 60, max_iter=2)
     assert "cell" in str(exc.value) and "z =" in str(exc.value)
@@ -139,8 +134,8 @@ def test_convergence_error_names_cell_and_equation():
 
 def test_bad_cells_refused():
     case = parse_case(_data("limestone_calcination"))
-    kiln, _ = reacting_kiln_from_case(case)
-    with pytest.raises(InputError, match="chemistry.cells"):
+    kiln, _ = kiln_from_case(case)
+    with pytest.raises(InputError, match="solver.cells"):
         solve_kiln(kiln, 2)
 
 
@@ -148,7 +143,7 @@ def test_faithful_gas_gain_refused():
     data = _data("charcoal_activation")
     data["chemistry"]["gas_gain_per_carbon"] = "faithful"
     with pytest.raises(InputError, match="gas_gain_per_carbon"):
-        reacting_kiln_from_case(parse_case(data))
+        kiln_from_case(parse_case(data))
 
 
 def test_user_reaction_from_case_file_runs():
@@ -163,28 +158,25 @@ def test_user_reaction_from_case_file_runs():
             "heat": "178 kJ/mol",
         },
     ]
-    sol = run_reacting_case(parse_case(data))
+    sol = run_kiln_case(parse_case(data))
     assert sol.conversion("CaCO3")[-1] > 0.99
     assert max(sol.element_closure.values()) < 1e-8
 
 
-def test_runner_writes_outputs_and_heat_runner_skips(tmp_path):
+def test_runner_writes_outputs_and_the_rtd_effects(tmp_path):
     data = _data("charcoal_activation")
     case = parse_case(data)
-    summary = reacting_runner(case, tmp_path)
-    for f in ("reacting_profiles.csv", "reacting_summary.json", "reacting_profiles.png"):
+    summary = kiln_runner(case, tmp_path)
+    for f in ("kiln_profiles.csv", "kiln_summary.json", "kiln_profiles.png"):
         assert (tmp_path / f).exists()
-    saved = json.loads((tmp_path / "reacting_summary.json").read_text())
-    assert saved["reacting_burn_off_percent"] == pytest.approx(summary["reacting_burn_off_percent"])
-    assert 0 < summary["reacting_conversion_segregated_flow"] < 1
-    # a case with both heat: and chemistry: is solved by the reacting runner only
-    both = copy.deepcopy(data)
-    both["heat"] = {"lining": [{"material": "fireclay_brick", "thickness": "0.1 m"}]}
-    assert heat_runner(parse_case(both), tmp_path / "h") == {}
+    saved = json.loads((tmp_path / "kiln_summary.json").read_text())
+    assert saved["kiln_burn_off_percent"] == pytest.approx(summary["kiln_burn_off_percent"])
+    assert 0 < summary["kiln_conversion_segregated_flow"] < 1
+    assert (tmp_path / "kiln_rtd.png").exists()
 
 
 def test_sweep_model_returns_scalars():
-    out = reacting_sweep_model(_data("charcoal_activation"))
+    out = kiln_model(_data("charcoal_activation"))
     assert 0 < out["burn_off_percent"] < 100
     assert all(isinstance(v, int | float) for v in out.values())
 
@@ -203,7 +195,7 @@ def test_kiln_rtd_moments_from_the_rtd_package():
 def test_residence_time_effects_peclet_sources(charcoal):
     data = _data("charcoal_activation")
     case = parse_case(data)
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     default = residence_time_effects(case, kiln, charcoal, n_tau=12)
     # Sherritt: D = 0.0011 (N/Nc)^0.39 D^1.15 dp^0.46 X^-0.43, Pe = u L / D
     assert default.peclet == pytest.approx(
@@ -235,16 +227,16 @@ def test_oil_shale_feed_with_pyrolysis_drying_and_calcination():
         "pyrolysis_wen_yen_5",
         "calcination_equilibrium",
     ]
-    data["chemistry"]["feed"]["composition"] = {
+    data["material"]["composition"] = {
         "H2O(l)": 0.25,
         "kerogen": 0.20,
         "CaCO3": 0.06,
         "inert": 0.49,
     }
-    data["chemistry"]["gas"]["inlet_temperature"] = "1100 K"
-    data["chemistry"]["gas"]["inlet_flow"] = "0.06 kg/s"
-    data["chemistry"]["solid"]["specific_heat"] = "1100 J/kg/K"
-    sol = run_reacting_case(parse_case(data))
+    data["gas"]["temperature"] = "1100 K"
+    data["gas"]["flow"] = "0.06 kg/s"
+    data["material"]["specific_heat"] = "1100 J/kg/K"
+    sol = run_kiln_case(parse_case(data))
     assert sol.conversion("kerogen")[-1] > 0.9
     assert sol.gas_flows["volatiles"][0] > 0
     assert sol.bed_flows["inert"][-1] == pytest.approx(sol.bed_flows["inert"][0])
@@ -253,7 +245,7 @@ def test_oil_shale_feed_with_pyrolysis_drying_and_calcination():
 
 def test_charcoal_mesh_refinement():
     case = parse_case(_data("charcoal_activation"))
-    kiln, _ = reacting_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     a = solve_kiln(kiln, 100)
     b = solve_kiln(kiln, 200)
     assert abs(a.bed_outlet_temperature - b.bed_outlet_temperature) < 2.0
@@ -269,13 +261,12 @@ def test_charcoal_mesh_refinement():
 )
 def test_any_operating_point_closes_its_balances_or_fails_loudly(t_res, gas, feed_t, steam):
     data = _data("charcoal_activation")
-    ch = data["chemistry"]
-    ch["residence_time"] = f"{t_res} s"
-    ch["gas"]["inlet_flow"] = f"{gas} kg/s"
-    ch["feed"]["temperature"] = f"{feed_t} K"
-    ch["gas"]["steam_flow"] = f"{steam} kg/s"
+    data["bed"]["residence_time"] = f"{t_res} s"
+    data["gas"]["flow"] = f"{gas} kg/s"
+    data["operation"]["feed_temperature"] = f"{feed_t} K"
+    data["gas"]["steam_flow"] = f"{steam} kg/s"
     try:
-        sol = run_reacting_case(parse_case(data))
+        sol = run_kiln_case(parse_case(data))
     except ConvergenceError:
         return  # loud failure is allowed; a silent bad result is not
     assert abs(sol.energy_closure) < 1e-6

@@ -28,10 +28,10 @@ def test_run_limestone_case_from_the_cli(capsys, tmp_path):
     code, out, _ = _run(capsys, tmp_path, _data("limestone_calcination"), "--json")
     assert code == 0
     s = json.loads(out)
-    assert s["reacting_conversion_CaCO3"] == pytest.approx(1.0)
-    assert abs(s["reacting_energy_balance_closure"]) < 1e-6
-    assert s["reacting_element_balance_closure"] < 1e-8
-    assert (tmp_path / "out" / "reacting_profiles.png").exists()
+    assert s["kiln_conversion_CaCO3"] == pytest.approx(1.0)
+    assert abs(s["kiln_energy_balance_closure"]) < 1e-6
+    assert s["kiln_element_balance_closure"] < 1e-8
+    assert (tmp_path / "out" / "kiln_profiles.png").exists()
 
 
 def _bad(data, path, value):
@@ -46,22 +46,22 @@ def _bad(data, path, value):
     ("path", "value", "message"),
     [
         (
-            ["chemistry", "feed", "composition"],
+            ["material", "composition"],
             {"H2O(l)": -0.1, "CaCO3": 0.9},
-            "chemistry.feed.composition.H2O(l): -0.1 is not a mass fraction",
+            "material.composition.H2O(l): -0.1 is not a mass fraction",
         ),
         (
-            ["chemistry", "feed", "composition"],
+            ["material", "composition"],
             {"H2O(l)": 0.2, "CaCO3": 0.9},
-            "chemistry.feed.composition: the fractions sum to 1.1, expected 1",
+            "material.composition: the fractions sum to 1.1, expected 1",
         ),
         (
-            ["chemistry", "feed", "composition"],
+            ["material", "composition"],
             {"H2O(l)": 0.1, "CaCO4": 0.9},
             '"CaCO4" is not a known species',
         ),
         (
-            ["chemistry", "gas", "composition"],
+            ["gas", "mass_fractions"],
             {"N2": 0.7, "CO2": 0.3, "unobtainium": 0.0},
             '"unobtainium" is not a known species',
         ),
@@ -87,7 +87,7 @@ def test_bad_input_refused_at_load(capsys, tmp_path, path, value, message):
     assert code == 2
     assert message in err
     assert len(err.strip().splitlines()) == 1  # one clear line
-    assert not (tmp_path / "out" / "reacting_profiles.csv").exists()
+    assert not (tmp_path / "out" / "kiln_profiles.csv").exists()
 
 
 def test_unbalanced_reaction_message_names_the_atoms(capsys, tmp_path):
@@ -117,9 +117,9 @@ def test_sweep_command_with_the_kiln_model(capsys, tmp_path):
             "--case",
             "charcoal_activation",
             "--model",
-            "rotarykiln.kiln.reacting:reacting_sweep_model",
+            "kiln",
             "--oat",
-            "chemistry.gas.steam_flow=0.0025 kg/s,0.0075 kg/s",
+            "gas.steam_flow=0.0025 kg/s,0.0075 kg/s",
             "--workers",
             "2",
             "--out",
@@ -132,6 +132,6 @@ def test_sweep_command_with_the_kiln_model(capsys, tmp_path):
     out, _ = capsys.readouterr()
     assert code == 0
     rows = json.loads(out)
-    burn = {r["chemistry.gas.steam_flow"]: r["burn_off_percent"] for r in rows}
+    burn = {r["gas.steam_flow"]: r["burn_off_percent"] for r in rows}
     assert burn["0.0025 kg/s"] < burn["0.0075 kg/s"]  # steam is a reactant (seed 004 Fig. 5.4)
     assert (tmp_path / "steam.csv").exists() and (tmp_path / "steam.png").exists()

@@ -20,8 +20,9 @@ from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.errors import InputError, OutOfRangeWarning
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.model import Closures, Kiln
-from rotarykiln.kiln.reacting import reacting_kiln_from_case, reacting_runner, run_reacting_case
+from rotarykiln.kiln.run import kiln_runner, run_kiln_case
 from rotarykiln.kiln.solve import solve_kiln
 from rotarykiln.kiln.tscheng import tscheng_kiln
 from rotarykiln.materials.solids import Solid
@@ -40,15 +41,14 @@ def _data(name):
 
 def _lined(name):
     data = _data(name)
-    ch = data["chemistry"]
-    ch["lining"] = copy.deepcopy(LINING)
-    ch["ambient_temperature"] = ch.pop("wall_loss")["ambient_temperature"]
+    del data["wall"]["U"]
+    data["wall"]["lining"] = copy.deepcopy(LINING)
     return data
 
 
 @pytest.fixture(scope="module")
 def lined_limestone():
-    return run_reacting_case(parse_case(_lined("limestone_calcination")))
+    return run_kiln_case(parse_case(_lined("limestone_calcination")))
 
 
 def test_lined_reacting_kiln_converges_and_closes(lined_limestone):
@@ -67,47 +67,40 @@ def test_lined_reacting_kiln_converges_and_closes(lined_limestone):
 
 
 def test_charcoal_with_a_lining_closes():
-    sol = run_reacting_case(parse_case(_lined("charcoal_activation")))
+    sol = run_kiln_case(parse_case(_lined("charcoal_activation")))
     assert abs(sol.energy_closure) < 1e-6
     assert max(sol.element_closure.values()) < 1e-8
     assert 0 < sol.burn_off < 100
 
 
-def test_constant_u_stays_the_default_and_is_selectable():
+def test_constant_u_or_a_lining():
     data = _data("limestone_calcination")
-    seed, _ = reacting_kiln_from_case(parse_case(data))
+    seed, _ = kiln_from_case(parse_case(data))
     assert seed.layers == () and seed.wall_loss_u == 7.0
-    both = copy.deepcopy(data)
-    both["chemistry"]["lining"] = copy.deepcopy(LINING)
-    lined, _ = reacting_kiln_from_case(parse_case(both))
-    assert len(lined.layers) == 2  # a lining given: the lined wall by default
-    both["chemistry"]["wall"] = "wall_u"
-    chosen, _ = reacting_kiln_from_case(parse_case(both))
-    assert chosen.layers == () and chosen.wall_loss_u == 7.0
-    a, b = solve_kiln(seed, 40), solve_kiln(chosen, 40)
-    assert np.array_equal(a.t_bed_nodes, b.t_bed_nodes)
+    lined, _ = kiln_from_case(parse_case(_lined("limestone_calcination")))
+    assert len(lined.layers) == 2 and lined.ambient_temperature == seed.ambient_temperature
 
 
 @pytest.mark.parametrize(
     "edit, field",
     [
-        ({"wall": "lining"}, "chemistry.lining"),  # no lining given
-        ({"lining": []}, "chemistry.lining"),
-        ({"ambient_temperature": "310 K"}, "chemistry.ambient_temperature"),  # 298 K in wall_loss
-        ({"closures": {"bed_conductivity": "maxwell"}}, "chemistry.closures.bed_conductivity"),
+        ({"wall": {"ambient_temperature": "298 K"}}, "wall: give lining"),  # no lining, no U
+        ({"wall": {"lining": []}}, "wall.lining"),
+        ({"wall": {"U": "7 W/m2/K", "lining": LINING}}, "wall: give lining"),
+        ({"closures": {"bed_conductivity": "maxwell"}}, "closures.bed_conductivity"),
     ],
 )
 def test_wall_inputs_refused(edit, field):
     data = _data("limestone_calcination")
-    data["chemistry"].update(edit)
+    data.update(edit)
     with pytest.raises(InputError, match=field):
-        reacting_kiln_from_case(parse_case(data))
+        kiln_from_case(parse_case(data))
 
 
 def test_runner_writes_the_shell_temperature(tmp_path):
-    summary = reacting_runner(parse_case(_lined("charcoal_activation")), tmp_path)
-    assert abs(summary["reacting_energy_balance_closure"]) < 1e-6
-    header = (tmp_path / "reacting_profiles.csv").read_text().splitlines()[0]
+    summary = kiln_runner(parse_case(_lined("charcoal_activation")), tmp_path)
+    assert abs(summary["kiln_energy_balance_closure"]) < 1e-6
+    header = (tmp_path / "kiln_profiles.csv").read_text().splitlines()[0]
     assert "T_shell_K" in header
 
 

@@ -15,9 +15,8 @@ import pytest
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln import steady
-from rotarykiln.kiln.reacting import reacting_kiln_from_case
+from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.residual import KilnResidual
-from rotarykiln.kiln.run import heat_kiln_from_case
 from rotarykiln.kiln.solve import (
     SPECIES_STEP_FLOOR,
     _continuation,
@@ -232,7 +231,7 @@ def test_reacting_solution_unchanged_by_the_speed_work(name):
     ref = REACTING[name]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path(name)))
+        kiln, _ = kiln_from_case(load_case(builtin_case_path(name)))
         sol = solve_kiln(kiln, 100)
     np.testing.assert_allclose(sol.t_bed_nodes[FACES], ref["t_bed_nodes"], rtol=0, atol=T_ATOL)
     np.testing.assert_allclose(sol.t_gas_nodes[FACES], ref["t_gas_nodes"], rtol=0, atol=T_ATOL)
@@ -248,7 +247,7 @@ def test_heat_solution_unchanged_by_the_speed_work(name):
     ref = HEAT[name]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        kiln, cells = heat_kiln_from_case(load_case(builtin_case_path(name)))
+        kiln, cells = kiln_from_case(load_case(builtin_case_path(name)))
         # the references are plug flow (heat cases now default to Sherritt's bed dispersion)
         sol = solve_kiln(dataclasses.replace(kiln, bed_dispersion=0.0), cells)
     assert len(sol.z) == 100
@@ -269,7 +268,7 @@ def test_heat_solution_unchanged_by_the_speed_work(name):
 def _fired_residual(n):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        kiln, _ = reacting_kiln_from_case(load_case(builtin_case_path("limestone_fired")))
+        kiln, _ = kiln_from_case(load_case(builtin_case_path("limestone_fired")))
     res = KilnResidual(kiln, n)
     res.q_ref = _reference_heat(res)
     return kiln, res

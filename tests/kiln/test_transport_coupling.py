@@ -1,11 +1,13 @@
-"""The heat model takes its bed fill from the axial transport model when the case has a
+"""The kiln model takes its bed fill from the axial transport model when the case has a
 ``transport:`` section (Kramers or Scott, with a dam)."""
 
 import numpy as np
 import pytest
 
 from rotarykiln.case import parse_case
-from rotarykiln.kiln.run import bed_fill_profile, heat_kiln_from_case, run_heat_case
+from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.coupling import bed_fill_profile
+from rotarykiln.kiln.run import run_kiln_case
 from rotarykiln.transport.kramers import kramers_uniform_depth
 
 CASE = {
@@ -16,11 +18,11 @@ CASE = {
         "bulk_density": "1650 kg/m3",
         "repose_angle": "27 deg",
         "particle_size": "0.73 mm",
+        "solid": "sand",
     },
     "transport": {"model": "kramers", "dam_height": "6 cm"},
-    "heat": {
-        "solid": "sand",
-        "gas": {"flow": "24.6 kg/h", "inlet_temperature": "535 K"},
+    "gas": {"flow": "24.6 kg/h", "temperature": "535 K"},
+    "wall": {
         "lining": [
             {"material": "refractory_cement", "thickness": "12.7 mm"},
             {"material": "carbon_steel", "thickness": "6.35 mm"},
@@ -32,7 +34,7 @@ CASE = {
 def test_fill_follows_the_bed_profile():
     case = parse_case(CASE)
     z, fill = bed_fill_profile(case)
-    kiln, _ = heat_kiln_from_case(case)
+    kiln, _ = kiln_from_case(case)
     assert np.allclose(kiln.fill_at(z), fill)
     # the 6 cm dam holds the bed above the uniform (closed-form) depth, which the profile
     # approaches from above towards the feed end
@@ -52,7 +54,7 @@ def test_fill_follows_the_bed_profile():
 @pytest.mark.parametrize("model", ["kramers", "scott"])
 def test_coupled_solve_closes_energy(model):
     data = {**CASE, "transport": {"model": model, "dam_height": "6 cm"}}
-    sol = run_heat_case(parse_case(data))
+    sol = run_kiln_case(parse_case(data))
     assert abs(sol.energy_closure) < 1e-6
     assert 298 < sol.summary()["bed_outlet_temperature_K"] < 535
 

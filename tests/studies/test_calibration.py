@@ -13,7 +13,7 @@ from rotarykiln.cli import main
 from rotarykiln.errors import InputError
 from rotarykiln.studies.calibration import calibrate, parse_fit, read_measurements
 from rotarykiln.studies.examples import EXPONENTIAL_CASE, exponential_heating
-from rotarykiln.studies.models import heat_profile_model
+from rotarykiln.studies.models import kiln_profile_model
 
 Z = np.array([0.1, 0.35, 0.6, 0.85, 1.1, 1.35, 1.6, 1.85, 2.0])
 
@@ -132,7 +132,7 @@ def test_bad_input_is_one_line():
 def _heat_data(tmp_path, seed=0):
     """Synthetic window temperatures of Tscheng A16 computed at 24.6 kg/h of gas, 5 K noise."""
     base = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
-    out = heat_profile_model(base)
+    out = kiln_profile_model(base)
     rng = np.random.default_rng(seed)
     rows = []
     for q in ("bed_temperature", "gas_temperature"):
@@ -155,11 +155,11 @@ def test_calibrate_command_recovers_the_gas_flow_of_the_heat_model(tmp_path, cap
         "calibrate",
         "tscheng_A16",
         "--model",
-        "heat_profiles",
+        "kiln_profiles",
         "--data",
         str(data),
         "--fit",
-        "heat.gas.flow=20 kg/h [5 kg/h, 60 kg/h]",
+        "gas.flow=20 kg/h [5 kg/h, 60 kg/h]",
         "--out",
         str(tmp_path / "cal"),
         "--json",
@@ -178,10 +178,10 @@ def test_calibrate_command_recovers_the_gas_flow_of_the_heat_model(tmp_path, cap
     ):
         assert (tmp_path / "cal" / name).is_file()
     case = parse_case(yaml.safe_load((tmp_path / "cal" / "calibrated.yaml").read_text()))
-    assert case.heat.gas.flow == pytest.approx(p["value"] / 3600, rel=1e-6)
+    assert case.gas.flow == pytest.approx(p["value"] / 3600, rel=1e-6)
     # the heat summary has no profiles: a one-line error that names the profile model
     assert main([*args[:3], "heat", *args[4:]]) == 2
-    assert "heat_profiles" in capsys.readouterr().err
+    assert "kiln_profiles" in capsys.readouterr().err
 
 
 def test_one_parameter_shared_by_several_cases():
@@ -223,9 +223,9 @@ def test_tscheng_44_runs_global_insulation_thickness():
     from rotarykiln.studies.tscheng1978 import tscheng_cases, tscheng_measurements
 
     r = calibrate_cases(
-        heat_profile_model,
+        kiln_profile_model,
         tscheng_cases(),
-        ["heat.lining.2.thickness=13.77 mm"],
+        ["wall.lining.2.thickness=13.77 mm"],
         tscheng_measurements(),
         workers=2,
     )
@@ -242,11 +242,11 @@ def test_tscheng_44_runs_global_convection_factor():
 
     cases = tscheng_cases()
     for c in cases.values():
-        c["heat"]["closures"] = {"convection_factor": 1.0}
+        c["closures"] = {"convection_factor": 1.0}
     r = calibrate_cases(
-        heat_profile_model,
+        kiln_profile_model,
         cases,
-        ["heat.closures.convection_factor=1 [0.2, 5]"],
+        ["closures.convection_factor=1 [0.2, 5]"],
         tscheng_measurements(),
         workers=2,
     )

@@ -17,7 +17,7 @@ def test_param_units_and_values():
     assert p.value(2.5) == "2.5 rpm"
     q = parse_param("operation.feed=triangular(50 kg/h, 62 kg/h, 0.02 kg/s)")
     assert q.args == pytest.approx((50, 62, 72))
-    t = parse_param("heat.gas.inlet_temperature=normal(1000 degC, 20 K)")
+    t = parse_param("gas.temperature=normal(1000 degC, 20 K)")
     assert t.args == pytest.approx((1000, 20)) and t.unit == "degC"
     ln = parse_param("x=lognormal(2, 0.3)")
     assert ln.nominal == pytest.approx(2.0) and ln.value(2.0) == 2.0

@@ -4,18 +4,18 @@ import yaml
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.cli import main
 from rotarykiln.studies import grid, run_sweep
-from rotarykiln.studies.models import MODELS, heat_model, transport_model
+from rotarykiln.studies.models import MODELS, kiln_model, transport_model
 
 
 def _case(name):
     return yaml.safe_load(builtin_case_path(name).read_text())
 
 
-def test_heat_model_sweep_hotter_gas_heats_the_bed_more():
+def test_kiln_model_sweep_hotter_gas_heats_the_bed_more():
     res = run_sweep(
-        heat_model,
+        kiln_model,
         _case("tscheng_A16"),
-        grid({"heat.gas.inlet_temperature": ["500 K", "600 K"]}),
+        grid({"gas.temperature": ["500 K", "600 K"]}),
         executor="serial",
     )
     frame = res.frame
@@ -35,14 +35,14 @@ def test_transport_model_residence_time_rises_with_a_dam():
 
 
 def test_sweep_cli_accepts_model_names(capsys, tmp_path):
-    assert set(MODELS) >= {"heat", "transport"}
+    assert set(MODELS) >= {"kiln", "kiln_profiles", "transport"}
     code = main(
         [
             "sweep",
             "--case",
             "tscheng_A16",
             "--model",
-            "heat",
+            "kiln",
             "--grid",
             "operation.speed=1 rpm,2 rpm",
             "--executor",

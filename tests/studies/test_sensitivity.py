@@ -65,19 +65,19 @@ def test_bad_output_and_failed_cases():
         sobol_indices(failing_model, {"x": 1.0}, ["x=uniform(-1, 1)"], "y", n=8, executor="serial")
 
 
-def test_sensitivity_command_on_the_heat_model(tmp_path, capsys):
+def test_sensitivity_command_on_the_kiln_model(tmp_path, capsys):
     out = tmp_path / "sens"
     args = [
         "sensitivity",
         "tscheng_A16",
         "--model",
-        "heat",
+        "kiln",
         "--method",
         "sobol",
         "--param",
         "operation.speed=uniform(1 rpm, 3 rpm)",
         "--param",
-        "heat.gas.inlet_temperature=normal(535 K, 10 K)",
+        "gas.temperature=normal(535 K, 10 K)",
         "--output",
         "bed_outlet_temperature_K",
         "--n",
@@ -90,7 +90,7 @@ def test_sensitivity_command_on_the_heat_model(tmp_path, capsys):
     ]
     assert main(args) == 0
     summary = json.loads(capsys.readouterr().out)
-    assert summary["cases"] == 16 and summary["ranking"][0] == "heat.gas.inlet_temperature"
+    assert summary["cases"] == 16 and summary["ranking"][0] == "gas.temperature"
     assert (out / "indices.csv").is_file() and (out / "sensitivity.png").is_file()
     assert len(list((out / "runs").glob("part-*.parquet"))) >= 1
     assert main([*args[:-1], "--output", "bed_outlet"]) == 2

@@ -143,7 +143,7 @@ def test_chapter5_design_on_builtin_case_with_toy_model():
     res = run_sweep(ortiz_isothermal_burn_off, case, ahmad_chapter5_design(), executor="serial")
     assert res.n_failed == 0
     df = res.frame
-    for path in ("chemistry.residence_time", "chemistry.gas.steam_flow"):
+    for path in ("bed.residence_time", "gas.steam_flow"):
         sub = df[df["group"] == path].sort_values(path + " [SI]")
         assert np.all(np.diff(sub["burn_off"]) > 0) and CHAPTER5_DIRECTIONS[path] == 1
         assert np.allclose(sub["burn_off"] + sub["production"], 100.0)

@@ -19,7 +19,7 @@ def test_sweep_command_writes_table_and_plot(tmp_path, capsys):
             "--executor",
             "serial",
             "--oat",
-            "chemistry.residence_time=3000 s,6480 s",
+            "bed.residence_time=3000 s,6480 s",
             "--out",
             str(tmp_path),
             "--json",
@@ -46,17 +46,17 @@ def test_sweep_command_bad_arguments():
 
 def test_sweep_command_sampled_design_resumes_and_fails_loudly(tmp_path, capsys):
     args = ["sweep", "--case", "charcoal_activation", "--model", MODEL, "--executor", "serial"]
-    args += ["--lhs", "6", "--param", "chemistry.residence_time=uniform(3000 s, 9000 s)"]
+    args += ["--lhs", "6", "--param", "bed.residence_time=uniform(3000 s, 9000 s)"]
     assert main([*args, "--out", str(tmp_path)]) == 0
     assert "6 run now, 0 from the store" in capsys.readouterr().out
     assert main([*args, "--out", str(tmp_path)]) == 0
     assert "0 run now, 6 from the store" in capsys.readouterr().out
     bad = ["sweep", "--case", "charcoal_activation", "--model", MODEL, "--executor", "serial"]
-    bad += ["--grid", "chemistry.residence_time=3000 s,fast", "--out", str(tmp_path / "b")]
+    bad += ["--grid", "bed.residence_time=3000 s,fast", "--out", str(tmp_path / "b")]
     assert main(bad) == 1
     assert "1 of 2 cases failed" in capsys.readouterr().err
-    assert main([*args[:-2], "--param", "chemistry.residence_tme=uniform(1 s, 2 s)"]) == 2
-    assert "did you mean chemistry.residence_time" in capsys.readouterr().err
+    assert main([*args[:-2], "--param", "bed.residence_tme=uniform(1 s, 2 s)"]) == 2
+    assert "did you mean bed.residence_time" in capsys.readouterr().err
 
 
 def test_sweep_command_unreachable_scheduler_is_one_line(tmp_path, capsys, monkeypatch):
@@ -75,7 +75,7 @@ def test_sweep_command_unreachable_scheduler_is_one_line(tmp_path, capsys, monke
         "--scheduler",
         "tcp://127.0.0.1:9",
         "--grid",
-        "chemistry.residence_time=3000 s",
+        "bed.residence_time=3000 s",
         "--out",
         str(tmp_path),
     ]

@@ -9,12 +9,12 @@ import yaml
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.cli import main
 from rotarykiln.errors import InputError
-from rotarykiln.studies.models import heat_profile_model
+from rotarykiln.studies.models import kiln_profile_model
 from rotarykiln.studies.uncertainty import propagate
 
 PARAMS = [
-    "heat.gas.inlet_temperature=normal(535 K, 10 K)",
-    "heat.gas.flow=uniform(22 kg/h, 27 kg/h)",
+    "gas.temperature=normal(535 K, 10 K)",
+    "gas.flow=uniform(22 kg/h, 27 kg/h)",
 ]
 
 
@@ -23,7 +23,7 @@ def test_bands_of_the_heat_profiles(tmp_path):
 
     matplotlib.use("Agg")
     base = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
-    res = propagate(heat_profile_model, base, PARAMS, 16, executor="serial")
+    res = propagate(kiln_profile_model, base, PARAMS, 16, executor="serial")
     assert len(res.samples) == 16 and res.n_failed == 0
     assert {"bed_temperature", "gas_temperature", "wall_temperature"} <= set(res.quantities)
     gas = res.bands("gas_temperature")
@@ -47,7 +47,7 @@ def test_uncertainty_command(tmp_path, capsys):
         "sensitivity",
         "tscheng_A16",
         "--model",
-        "heat_profiles",
+        "kiln_profiles",
         "--method",
         "uncertainty",
         "--n",

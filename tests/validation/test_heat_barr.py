@@ -22,7 +22,7 @@ import yaml
 
 from rotarykiln.case import load_case, parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.run import run_heat_case
+from rotarykiln.kiln.run import run_kiln_case
 
 TRIALS = ("T3", "T4", "T6")
 
@@ -33,7 +33,7 @@ def _rmse(model, measured):
 
 @pytest.fixture(scope="module")
 def solutions():
-    return {t: run_heat_case(load_case(builtin_case_path(f"barr_{t}"))) for t in TRIALS}
+    return {t: run_kiln_case(load_case(builtin_case_path(f"barr_{t}"))) for t in TRIALS}
 
 
 def test_cases_hold_the_data_file_measurements():
@@ -41,7 +41,7 @@ def test_cases_hold_the_data_file_measurements():
     path = resources.files("rotarykiln") / "data" / "barr1986" / "barr_pilot_kiln_T3_T4_T6.yaml"
     data = yaml.safe_load(path.read_text())
     for t in TRIALS:
-        m = load_case(builtin_case_path(f"barr_{t}")).heat.measurements
+        m = load_case(builtin_case_path(f"barr_{t}")).measurements
         src = data["cases"][t]["measured_K"]
         assert m.t_bed == pytest.approx([v for _, v in src["T_bed"]])
         assert m.t_gas == pytest.approx([v for _, v in src["T_gas_off_bed"]])
@@ -83,9 +83,9 @@ def test_firing_rate_matches_the_reference_note():
     # flames.md section 6 (Cantera, 0 degC basis): Q = 50.8, 70.5, 32.2 kW LHV
     for t, q in zip(TRIALS, (50.8e3, 70.5e3, 32.2e3), strict=True):
         case = load_case(builtin_case_path(f"barr_{t}"))
-        from rotarykiln.kiln.run import heat_kiln_from_case
+        from rotarykiln.kiln.build import kiln_from_case
 
-        kiln, _ = heat_kiln_from_case(case)
+        kiln, _ = kiln_from_case(case)
         assert kiln.flame.fuel_lhv == pytest.approx(q, rel=2e-3)
 
 
@@ -93,8 +93,8 @@ def test_mesh_doubling_changes_profiles_by_less_than_2_K():
     data = yaml.safe_load(builtin_case_path("barr_T4").read_text())
     sols = []
     for n in (100, 200):
-        data["heat"]["cells"] = n
-        sols.append(run_heat_case(parse_case(data)))
+        data["solver"] = {"cells": n}
+        sols.append(run_kiln_case(parse_case(data)))
     a, b = sols
     assert np.max(np.abs(a.t_bed_nodes - b.t_bed_nodes[::2])) < 2.0
     assert np.max(np.abs(a.t_gas_nodes - b.t_gas_nodes[::2])) < 2.0
@@ -104,8 +104,8 @@ def test_co_current_variant_converges():
     # every built-in fired heat case (the fired limestone kiln: tests/kiln/test_fired_reacting.py)
     for name in [f"barr_{t}" for t in TRIALS] + ["ubc_pilot_flame"]:
         data = yaml.safe_load(builtin_case_path(name).read_text())
-        data["heat"]["counter_current"] = False
-        sol = run_heat_case(parse_case(data))
+        data["operation"]["counter_current"] = False
+        sol = run_kiln_case(parse_case(data))
         assert abs(sol.energy_closure) < 1e-6
         assert sol.t_gas_nodes[0] == pytest.approx(sol.burner["adiabatic_temperature_K"])
 
@@ -113,9 +113,9 @@ def test_co_current_variant_converges():
 @pytest.mark.parametrize("counter_current", [True, False])
 def test_mixing_limited_burnout_option_converges_and_closes(counter_current):
     data = yaml.safe_load(builtin_case_path("barr_T4").read_text())
-    data["heat"]["burner"].update(combustion="burnout", nozzle_diameter="40 mm")
-    data["heat"]["counter_current"] = counter_current
-    sol = run_heat_case(parse_case(data))
+    data["burner"].update(combustion="burnout", nozzle_diameter="40 mm")
+    data["operation"]["counter_current"] = counter_current
+    sol = run_kiln_case(parse_case(data))
     s = sol.energy_sheet
     assert abs(sol.energy_closure) < 1e-6 and abs(s["closure_relative"]) < 1e-6
     assert s["combustion_heat_W"] == pytest.approx(s["fuel_lhv_input_W"], rel=2e-3)

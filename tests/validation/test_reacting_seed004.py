@@ -12,7 +12,7 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.reacting import run_reacting_case
+from rotarykiln.kiln.run import run_kiln_case
 
 
 def _data(name):
@@ -21,12 +21,12 @@ def _data(name):
 
 @pytest.fixture(scope="module")
 def charcoal():
-    return run_reacting_case(parse_case(_data("charcoal_activation")))
+    return run_kiln_case(parse_case(_data("charcoal_activation")))
 
 
 @pytest.fixture(scope="module")
 def limestone():
-    return run_reacting_case(parse_case(_data("limestone_calcination")))
+    return run_kiln_case(parse_case(_data("limestone_calcination")))
 
 
 def test_charcoal_onset_near_2p5_m_at_1073_k(charcoal):
@@ -74,7 +74,7 @@ def test_limestone_peaks_and_full_calcination(limestone):
 def test_limestone_equilibrium_rate_starts_above_equilibrium_temperature():
     data = _data("limestone_calcination")
     data["chemistry"]["reactions"] = ["drying_ahmad", "calcination_equilibrium"]
-    sol = run_reacting_case(parse_case(data))
+    sol = run_kiln_case(parse_case(data))
     r0 = sol.reaction_rates["calcination_equilibrium"]
     t_on = float(sol.t_bed[np.argmax(r0 > 0)])
     # p_CO2 in the flue gas is ~0.1 atm here: Baker's T_eq(0.1 atm) = 1033 K; nothing calcines
@@ -83,9 +83,9 @@ def test_limestone_equilibrium_rate_starts_above_equilibrium_temperature():
     assert sol.conversion("CaCO3")[-1] == pytest.approx(1.0, abs=1e-9)
     pure = _data("limestone_calcination")
     pure["chemistry"]["reactions"] = ["calcination_equilibrium"]
-    pure["chemistry"]["gas"]["composition"] = {"CO2": 1.0}  # dry feed: the gas stays pure CO2
-    pure["chemistry"]["feed"]["composition"] = {"CaCO3": 1.0}
-    sol1 = run_reacting_case(parse_case(pure))
+    pure["gas"]["mass_fractions"] = {"CO2": 1.0}  # dry feed: the gas stays pure CO2
+    pure["material"]["composition"] = {"CaCO3": 1.0}
+    sol1 = run_kiln_case(parse_case(pure))
     r = sol1.reaction_rates["calcination_equilibrium"]
     assert np.all(r[sol1.t_bed < 1173.6] == 0.0)  # ~1170 K at 1 atm CO2 (issue 7)
     assert r.max() > 0

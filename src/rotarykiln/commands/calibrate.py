@@ -14,8 +14,8 @@ the data; the covariance is then scaled by chi2/dof unless ``--absolute-uncertai
 
 Example::
 
-    rotarykiln calibrate tscheng_A16 --model heat_profiles --data plant.csv \\
-        --fit "heat.gas.flow=20 kg/h [5 kg/h, 60 kg/h]" --fit "heat.wall_emissivity=0.8 [0.3, 1]" \\
+    rotarykiln calibrate tscheng_A16 --model kiln_profiles --data plant.csv \\
+        --fit "gas.flow=20 kg/h [5 kg/h, 60 kg/h]" --fit "wall.emissivity=0.8 [0.3, 1]" \\
         --out cal/
 """
 
@@ -50,7 +50,7 @@ def register(sub) -> None:
         help="case YAML file or built-in case name; several (NAME=FILE) for a joint fit",
     )
     p.add_argument(
-        "--model", default="heat_profiles", help="heat_profiles (default), heat or module:function"
+        "--model", default="kiln_profiles", help="kiln_profiles (default), kiln or module:function"
     )
     p.add_argument("--data", required=True, help="CSV: quantity, z, value, uncertainty")
     p.add_argument(
@@ -58,7 +58,7 @@ def register(sub) -> None:
         action="append",
         required=True,
         metavar="PATH=START [LOW, HIGH]",
-        help='a field to fit, e.g. "heat.gas.flow=20 kg/h [5 kg/h, 60 kg/h]" (repeatable)',
+        help='a field to fit, e.g. "gas.flow=20 kg/h [5 kg/h, 60 kg/h]" (repeatable)',
     )
     p.add_argument(
         "--relative-uncertainty",

@@ -1,7 +1,7 @@
 """``rotarykiln demo``: run the main built-in example and write its results and plots.
 
 The demonstration is Tscheng's hot-air pilot kiln, run A16 (built-in case ``tscheng_A16``):
-the steady counter-current heat model from the measured inputs, with the measured gas, bed and wall
+the steady counter-current kiln model from the measured inputs, with the measured gas, bed and wall
 temperatures overlaid on the computed profiles, and the HTML report of the run (``report.html``).
 """
 
@@ -24,7 +24,7 @@ def register(sub) -> None:
         "demo",
         help="run the built-in demonstration case",
         description="Run Tscheng's hot-air pilot kiln (run A16, built-in case tscheng_A16): "
-        "heat profiles with the measured temperatures, regime map, cross-section, summary, and "
+        "kiln profiles with the measured temperatures, regime map, cross-section, summary, and "
         "the HTML report of the run (report.html).",
     )
     p.add_argument("--out", default="demo-output", help="output folder (default: demo-output)")

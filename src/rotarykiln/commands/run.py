@@ -21,11 +21,19 @@ from rotarykiln.report import case_summary, format_table
 
 RUNNERS: dict[str, str] = {
     "transport": "rotarykiln.commands.bed:run_case_section",
-    "heat": "rotarykiln.kiln.run:heat_runner",
+    "kiln": "rotarykiln.kiln.run:kiln_runner",
     "rtd": "rotarykiln.kiln.coupling:rtd_runner",
-    "chemistry": "rotarykiln.kiln.reacting:reacting_runner",
 }
-"""Section name -> "module:function(case, out_dir) -> dict" run when the case has that section."""
+"""Model name -> "module:function(case, out_dir) -> dict", run when the case asks for it
+(:func:`wants`: a ``transport:`` or ``rtd:`` section; the kiln model for a case with a heat
+source or chemistry, :attr:`rotarykiln.case.Case.has_kiln_model`)."""
+
+
+def wants(case, model: str) -> bool:
+    """Whether the validated ``case`` asks for the model ``model`` of :data:`RUNNERS`."""
+    if model == "kiln":
+        return case.has_kiln_model
+    return getattr(case, model, None) is not None
 
 
 def register(sub) -> None:
@@ -33,7 +41,7 @@ def register(sub) -> None:
         "run",
         help="validate a case file and run it",
         description="Validate a case file (YAML with units) and run every model its sections "
-        "switch on (transport, heat, rtd, chemistry); write summary.json, summary.txt, tables and "
+        "switch on (transport, the kiln model, rtd); write summary.json, summary.txt, tables and "
         "figures to --out. Built-in cases: see src/rotarykiln/cases/README.md. "
         "Example: rotarykiln run limestone_calcination --out lime",
     )
@@ -64,20 +72,23 @@ def run_case(
         summary = case_summary(case)
         sections = {"case": dict(summary)}
         for section, target in RUNNERS.items():
-            if getattr(case, section, None) is not None:
+            if wants(case, section):
                 module, func = target.split(":")
                 sections[section] = getattr(importlib.import_module(module), func)(case, out) or {}
                 summary.update(sections[section])
         write_json_atomic(out / "summary.json", summary)
         write_text_atomic(out / "summary.txt", format_table(summary) + "\n")
-        if plots and case.bed is not None:
+        if plots and case.bed is not None and case.bed.mean_fill is not None:
             import matplotlib.pyplot as plt
 
             from rotarykiln.plot import cross_section_figure, regime_map_figure
 
             for name, fig in (
-                ("regime_map.png", regime_map_figure(case.bed.fill, summary["froude"])),
-                ("cross_section.png", cross_section_figure(case.bed.fill, case.kiln.diameter / 2)),
+                ("regime_map.png", regime_map_figure(case.bed.mean_fill, summary["froude"])),
+                (
+                    "cross_section.png",
+                    cross_section_figure(case.bed.mean_fill, case.kiln.diameter / 2),
+                ),
             ):
                 save_figure_atomic(out / name, fig)
                 plt.close(fig)

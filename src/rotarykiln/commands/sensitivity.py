@@ -7,18 +7,18 @@ OUT/runs (a second run resumes). Writes OUT/indices.csv, OUT/indices.json and th
 OUT/sensitivity.png. With ``--method uncertainty`` (no ``--output``): the nominal case and N
 Latin-hypercube samples; OUT/scalars.csv (nominal, mean, sd, 5-50-95 % of every scalar output),
 OUT/bands.csv and OUT/uncertainty.png (5-95 % bands of the axial profiles around the nominal;
-use ``--model heat_profiles``).
+use ``--model kiln_profiles``).
 
 Example::
 
-    rotarykiln sensitivity tscheng_A16 --model heat --method sobol \\
+    rotarykiln sensitivity tscheng_A16 --model kiln --method sobol \\
         --param "operation.speed=uniform(1 rpm, 3 rpm)" \\
-        --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" \\
-        --param "heat.gas.flow=uniform(20 kg/h, 30 kg/h)" \\
+        --param "gas.temperature=normal(535 K, 10 K)" \\
+        --param "gas.flow=uniform(20 kg/h, 30 kg/h)" \\
         --output bed_outlet_temperature_K --n 64 --out sens/
 
-    rotarykiln sensitivity tscheng_A16 --model heat_profiles --method uncertainty \\
-        --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" --n 100 --out unc/
+    rotarykiln sensitivity tscheng_A16 --model kiln_profiles --method uncertainty \\
+        --param "gas.temperature=normal(535 K, 10 K)" --n 100 --out unc/
 """
 
 from __future__ import annotations
@@ -50,7 +50,9 @@ def register(sub) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("case", help="case YAML file or built-in case name")
-    p.add_argument("--model", required=True, help="heat, transport or module:function")
+    p.add_argument(
+        "--model", required=True, help="kiln, kiln_profiles, transport or module:function"
+    )
     p.add_argument("--method", choices=(*METHODS, "uncertainty"), default="sobol")
     p.add_argument("--output", help="name of the scalar output analysed (sobol, morris)")
     p.add_argument(

@@ -1,6 +1,6 @@
 """``rotarykiln sweep``: run a model over a design of case fields, persistently.
 
-The model is a name (``heat``, ``transport``: see :mod:`rotarykiln.studies.models`) or any
+The model is a name (``kiln``, ``kiln_profiles``, ``transport``: see :mod:`rotarykiln.studies.models`) or any
 importable function ``module:function`` taking a case (nested dict) and returning a dict of
 scalars. Values keep their units as in a case file. Designs: ``--grid`` (full factorial),
 ``--oat`` (one at a time), or ``--lhs N`` / ``--sobol N`` / ``--mc N`` samples of the
@@ -14,12 +14,12 @@ Example::
 
     rotarykiln sweep --case charcoal_activation \\
         --model rotarykiln.studies.examples:ortiz_isothermal_burn_off \\
-        --oat chemistry.residence_time="3000 s,6480 s,10000 s" \\
-        --oat chemistry.gas.steam_flow="0.0025 kg/s,0.005 kg/s" --out results
+        --oat bed.residence_time="3000 s,6480 s,10000 s" \\
+        --oat gas.steam_flow="0.0025 kg/s,0.005 kg/s" --out results
 
-    rotarykiln sweep --case tscheng_A16 --model heat --lhs 200 \\
+    rotarykiln sweep --case tscheng_A16 --model kiln --lhs 200 \\
         --param "operation.speed=uniform(1 rpm, 3 rpm)" \\
-        --param "heat.gas.inlet_temperature=normal(535 K, 10 K)" --out lhs/
+        --param "gas.temperature=normal(535 K, 10 K)" --out lhs/
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ def register(sub) -> None:
     p.add_argument(
         "--model",
         required=True,
-        help="model: heat, transport (see rotarykiln.studies.models) or module:function",
+        help="model: kiln, kiln_profiles, transport (see rotarykiln.studies.models) or module:function",
     )
     p.add_argument(
         "--grid",

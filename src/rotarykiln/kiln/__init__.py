@@ -2,9 +2,9 @@
 
 Entry points: :class:`Kiln` (inputs; :meth:`Kiln.inert` for a bed that does not react),
 :func:`solve_kiln` (Newton on the discretised balances), :class:`KilnSolution` (profiles,
-balances, summary), :func:`~rotarykiln.kiln.run.run_heat_case` and
-:func:`~rotarykiln.kiln.reacting.run_reacting_case` (from the ``heat:`` and ``chemistry:``
-sections of a case file), :mod:`rotarykiln.kiln.tscheng` (Tscheng's validation kilns).
+balances, summary), :func:`~rotarykiln.kiln.build.kiln_from_case` and
+:func:`~rotarykiln.kiln.run.run_kiln_case` (from a case file),
+:mod:`rotarykiln.kiln.tscheng` (Tscheng's validation kilns).
 """
 
 from rotarykiln.kiln.model import Closures, Kiln

@@ -87,7 +87,6 @@ def cell_grid(
     *,
     heat_release: float = 0.0,
     heat_release_profile=None,
-    section: str = "heat",
 ) -> Grid:
     """Precompute the geometry of ``n_cells`` equal cells of a kiln.
 
@@ -104,8 +103,6 @@ def cell_grid(
     heat_release : float, W
         Heat released in the gas over the kiln, distributed by ``heat_release_profile``
         (callable of z, normalised here; None: uniform).
-    section : str
-        Case section named in input errors (``heat``, ``chemistry``).
 
     Returns
     -------
@@ -120,7 +117,7 @@ def cell_grid(
     from rotarykiln.errors import InputError
 
     if int(n_cells) != n_cells or n_cells < 4:
-        raise InputError(f"{section}.cells", n_cells, "an integer >= 4")
+        raise InputError("solver.cells", n_cells, "an integer >= 4")
     n = int(n_cells)
     zn = np.linspace(0.0, length, n + 1)
     z = 0.5 * (zn[:-1] + zn[1:])
@@ -128,7 +125,7 @@ def cell_grid(
     fill = fill_at(z)
     if np.any(fill <= 0.0):
         j = int(np.argmax(fill <= 0.0))
-        raise InputError(f"{section}.fill (cell {j}, z = {z[j]:.4g} m)", float(fill[j]), "> 0")
+        raise InputError(f"bed.fill (cell {j}, z = {z[j]:.4g} m)", float(fill[j]), "> 0")
     cs = CrossSection.from_fill(fill, radius)
     R = radius
     present = np.array([layer.present(z) for layer in layers]).reshape(len(layers), n)
@@ -146,7 +143,7 @@ def cell_grid(
             w = np.asarray(heat_release_profile(z), dtype=float) * np.ones(n)
             if np.any(~np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0:
                 raise InputError(
-                    f"{section}.heat_release_profile", "profile", "finite, >= 0 and not all zero"
+                    "burner (heat release profile)", "profile", "finite, >= 0 and not all zero"
                 )
         q_rel = heat_release * w / (w.sum() * dz)
     else:

@@ -52,39 +52,42 @@ class Closures:
 
     def __post_init__(self):
         for name, value, allowed in (
-            ("heat.closures.gas_wall", self.gas_wall, GAS_WALL),
-            ("heat.closures.gas_bed", self.gas_bed, GAS_BED),
-            ("heat.closures.covered_wall", self.covered_wall, COVERED_WALL),
-            ("heat.closures.bed_conductivity", self.bed_conductivity, BED_CONDUCTIVITY),
+            ("closures.gas_wall", self.gas_wall, GAS_WALL),
+            ("closures.gas_bed", self.gas_bed, GAS_BED),
+            ("closures.covered_wall", self.covered_wall, COVERED_WALL),
+            ("closures.bed_conductivity", self.bed_conductivity, BED_CONDUCTIVITY),
         ):
             if value not in allowed:
                 raise InputError(name, value, "one of " + ", ".join(allowed))
         if isinstance(self.gas_emissivity, str):
             if self.gas_emissivity not in GAS_EMISSIVITY:
                 raise InputError(
-                    "heat.closures.gas_emissivity",
+                    "closures.gas_emissivity",
                     self.gas_emissivity,
                     "one of " + ", ".join(GAS_EMISSIVITY) + " or a number in [0, 1)",
                 )
         else:
-            check_range(
-                "heat.closures.gas_emissivity", self.gas_emissivity, 0.0, 1.0, closed_low=True
-            )
-        check_range("heat.closures.convection_factor", self.convection_factor, 0.0, 100.0)
+            check_range("closures.gas_emissivity", self.gas_emissivity, 0.0, 1.0, closed_low=True)
+        check_range("closures.convection_factor", self.convection_factor, 0.0, 100.0)
 
     @classmethod
     def from_case(cls, section) -> Closures:
-        """The closures of a case file's ``closures`` section (:class:`rotarykiln.case.HeatClosures`).
+        """The closures of a case file's ``closures`` section (:class:`rotarykiln.case.Closures`):
+        its ``preset`` (``default``: these defaults; ``seed004``: :data:`SEED004_CLOSURES`)
+        with the keys it gives.
 
         Examples
         --------
-        >>> from rotarykiln.case import HeatClosures
-        >>> c = Closures.from_case(HeatClosures(gas_bed="gorog1982"))
+        >>> from rotarykiln.case import Closures as ClosuresSection
+        >>> c = Closures.from_case(ClosuresSection(gas_bed="gorog1982"))
         >>> c.gas_bed, c.gas_wall
         ('gorog1982', 'tscheng1979')
+        >>> Closures.from_case(ClosuresSection(preset="seed004", radiation=False)).gas_wall
+        'gorog1982'
         """
+        base = SEED004_CLOSURES if getattr(section, "preset", "default") == "seed004" else cls()
         given = {f.name: getattr(section, f.name) for f in fields(cls)}
-        return cls(**{k: v for k, v in given.items() if v is not None})
+        return dataclasses.replace(base, **{k: v for k, v in given.items() if v is not None})
 
 
 #: Closures of seed 004 (Gorog et al. 1982 gas-bed and gas-wall, Tscheng & Watkinson 1979
@@ -140,8 +143,7 @@ class Kiln:
     cell centres, normalised; None: uniform), e.g. a burner's burn-out;
     ``flame``: the :class:`~rotarykiln.kiln.flame.Flame` of a burner (heating values and jet
     numbers for the energy sheet and the summary); ``measurements``: measured profiles
-    (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots; ``section``: the case-file
-    section named in input errors (``chemistry`` or ``heat``).
+    (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots.
     ``bed_dispersion`` (m2/s): axial dispersion coefficient of the bed inside the balances
     (:mod:`rotarykiln.kiln.dispersion`; 0: plug flow; e.g. :math:`u L / Pe` with Pe from
     :mod:`rotarykiln.rtd.correlations`).
@@ -183,52 +185,50 @@ class Kiln:
     heat_release_profile: object | None = None
     flame: object | None = None
     measurements: dict | None = None
-    section: str = "chemistry"
     bed_dispersion: float = 0.0
     heaters: tuple = ()
 
     def __post_init__(self):
-        sec = self.section
         check_positive("kiln.length", self.length, "m")
         check_positive("kiln.radius", self.radius, "m")
         check_positive("operation.speed", self.omega, "rad/s")
         if isinstance(self.fill, int | float):
-            check_range(f"{sec}.fill", self.fill, 0.0, 0.5, closed_high=True)
-        check_nonnegative("heat.heat_release", self.heat_release, "W")
-        check_positive(f"{sec}.bed_velocity", self.bed_velocity, "m/s")
-        check_positive(f"{sec}.feed.temperature", self.feed_temperature, "K")
-        check_positive(f"{sec}.gas.inlet_temperature", self.gas_inlet_temperature, "K")
+            check_range("bed.fill", self.fill, 0.0, 0.5, closed_high=True)
+        check_nonnegative("burner.heat_release", self.heat_release, "W")
+        check_positive("bed.residence_time (solids speed)", self.bed_velocity, "m/s")
+        check_positive("operation.feed_temperature", self.feed_temperature, "K")
+        check_positive("gas.temperature", self.gas_inlet_temperature, "K")
         check_positive("material.bulk_density", self.bulk_density, "kg/m3")
-        check_positive(f"{sec}.solid.thermal_conductivity", self.bed_conductivity, "W/(m K)")
-        check_range(f"{sec}.solid.emissivity", self.bed_emissivity, 0.0, 1.0, closed_high=True)
+        check_positive("material.thermal_conductivity", self.bed_conductivity, "W/(m K)")
+        check_range("material.emissivity", self.bed_emissivity, 0.0, 1.0, closed_high=True)
         for name, eps in (
-            (f"{sec}.wall_emissivity", self.wall_emissivity),
-            (f"{sec}.shell_emissivity", self.shell_emissivity),
+            ("wall.emissivity", self.wall_emissivity),
+            ("wall.shell_emissivity", self.shell_emissivity),
         ):
             if eps is not None:
                 check_range(name, eps, 0.0, 1.0, closed_high=True)
-        check_nonnegative(f"{sec}.wind_speed", self.wind_speed, "m/s")
+        check_nonnegative("wall.wind_speed", self.wind_speed, "m/s")
         if not isinstance(self.closures, Closures):
-            raise InputError(f"{sec}.closures", self.closures, "a Closures object")
+            raise InputError("closures", self.closures, "a Closures object")
         if self.closures.bed_conductivity != "given" and self.bed_material is None:
             raise InputError(
-                f"{sec}.closures.bed_conductivity",
+                "closures.bed_conductivity",
                 self.closures.bed_conductivity,
-                "given (the reacting kiln uses chemistry.solid.thermal_conductivity)",
+                "given (a bed without a library solid uses material.thermal_conductivity)",
             )
         check_positive("material.particle_size", self.particle_diameter, "m")
-        check_nonnegative(f"{sec}.wall_loss.U", self.wall_loss_u, "W/(m2 K)")
-        check_positive(f"{sec}.wall_loss.ambient_temperature", self.ambient_temperature, "K")
-        check_positive(f"{sec}.gas.pressure", self.pressure, "Pa")
-        check_nonnegative(f"{sec}.bed_dispersion", self.bed_dispersion, "m2/s")
+        check_nonnegative("wall.U", self.wall_loss_u, "W/(m2 K)")
+        check_positive("wall.ambient_temperature", self.ambient_temperature, "K")
+        check_positive("gas.pressure", self.pressure, "Pa")
+        check_nonnegative("bed.axial_dispersion", self.bed_dispersion, "m2/s")
         if self.heaters and not self.layers:
             raise InputError(
-                f"{sec}.heaters", "given", "with a lining (the heaters sit on the shell)"
+                "wall.heaters", "given", "with a lining (the heaters sit on the shell)"
             )
         for zone in self.heaters:
             if zone.end > self.length + 1e-9:
                 raise InputError(
-                    f"{sec}.heaters",
+                    "wall.heaters",
                     f"{zone.end:.6g} m",
                     f"<= the kiln length ({self.length:.6g} m)",
                 )
@@ -245,8 +245,8 @@ class Kiln:
             )
         sp = self.mechanism.species
         for label, flows, phase in (
-            (f"{sec}.feed", self.feed, "bed"),
-            (f"{sec}.gas", self.gas_in, "gas"),
+            ("material.composition", self.feed, "bed"),
+            ("gas", self.gas_in, "gas"),
         ):
             if not flows or sum(flows.values()) <= 0:
                 raise InputError(f"{label} mass flow", flows, "> 0 kg/s in total")
@@ -255,14 +255,14 @@ class Kiln:
                     raise InputError(f"{label}.{name}", name, f"a {phase} species")
                 check_nonnegative(f"{label}.{name}", q, "kg/s")
         for name, cp in self.bed_cp.items():
-            check_positive(f"{sec}.bed_cp.{name}", cp, "J/(kg K)")
+            check_positive(f"material.specific_heat ({name})", cp, "J/(kg K)")
         if self.steam_flow is not None:
-            check_nonnegative(f"{sec}.gas.steam_flow", self.steam_flow, "kg/s")
+            check_nonnegative("gas.steam_flow", self.steam_flow, "kg/s")
         if self.gas_emissivity_law is not None:
             a, b, lo = self.gas_emissivity_law
             if not (np.isfinite(a) and np.isfinite(b) and 0 <= lo < 1):
                 raise InputError(
-                    f"{sec}.gas.emissivity", self.gas_emissivity_law, "finite a, b; 0 <= min < 1"
+                    "gas.emissivity_a", self.gas_emissivity_law, "finite a, b; 0 <= min < 1"
                 )
 
     @property
@@ -315,8 +315,8 @@ class Kiln:
         """
         from rotarykiln.materials.gas import parse_composition
 
-        check_positive("heat.solids_flow", solids_flow, "kg/s")
-        check_positive("heat.gas_flow", gas_flow, "kg/s")
+        check_positive("operation.feed", solids_flow, "kg/s")
+        check_positive("gas.flow", gas_flow, "kg/s")
         mech = Mechanism(())
         sp = mech.species
         mass = {}
@@ -349,7 +349,6 @@ class Kiln:
             closures=closures or Closures(),
             fill=fill,
             bed_velocity=1.0,
-            section=kw.pop("section", "heat"),
             **kw,
         )
         area = np.pi * probe.radius**2

@@ -103,13 +103,21 @@ class ResidenceTimeEffects:
         return ax
 
 
+def fed_reactant(kiln) -> str | None:
+    """The first fed bed species (moisture aside) that a reaction consumes, or None."""
+    for r in kiln.mechanism.reactions:
+        if r.basis != MOISTURE and kiln.feed.get(r.basis, 0) > 0:
+            return r.basis
+    return None
+
+
 def _reactant(sol, kiln) -> str:
-    mech = kiln.mechanism
-    bases = [r.basis for r in mech.reactions if r.basis != MOISTURE]
-    for b in bases:
-        if kiln.feed.get(b, 0) > 0:
-            return b
-    raise InputError("chemistry.reactions", mech.names, "a reaction consuming a fed bed species")
+    name = fed_reactant(kiln)
+    if name is None:
+        raise InputError(
+            "chemistry.reactions", kiln.mechanism.names, "a reaction consuming a fed bed species"
+        )
+    return name
 
 
 def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: int = 24):

@@ -119,7 +119,6 @@ class KilnResidual:
             k.layers,
             heat_release=k.heat_release,
             heat_release_profile=k.heat_release_profile,
-            section=k.section,
         )
         self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
         if getattr(k, "jacket", None) is not None:  # kiln/jacket.py

@@ -1,4 +1,4 @@
-"""Result of a reacting kiln solve: temperatures, species flows, rates, balances."""
+"""Result of a kiln solve: temperatures, species flows, rates, balances."""
 
 from __future__ import annotations
 

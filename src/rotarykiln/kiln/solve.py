@@ -1,4 +1,4 @@
-"""Solve the reacting kiln (energy + species) at once by Newton, with continuation fallbacks."""
+"""Solve the kiln (energy + species) at once by Newton, with continuation fallbacks."""
 
 from __future__ import annotations
 
@@ -110,7 +110,7 @@ def solve_kiln(
         not close or a result is not finite.
     """
     if int(n_cells) != n_cells or n_cells < 4:
-        raise InputError("chemistry.cells", n_cells, "an integer >= 4")
+        raise InputError("solver.cells", n_cells, "an integer >= 4")
     res = KilnResidual(kiln, int(n_cells))
     q_ref = _reference_heat(res)
     res.q_ref = q_ref

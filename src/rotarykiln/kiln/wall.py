@@ -80,7 +80,7 @@ def heater_arrays(zones, z_nodes):
     return power, setpoint
 
 
-def layers_from_case(lining, section: str = "heat") -> tuple[Layer, ...]:
+def layers_from_case(lining, section: str = "wall") -> tuple[Layer, ...]:
     """Lining layers of a case file's ``lining`` list (:class:`rotarykiln.case.LiningLayer`).
 
     Raises :class:`~rotarykiln.errors.InputError` (``<section>.lining``) for an empty list.

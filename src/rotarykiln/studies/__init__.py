@@ -7,7 +7,7 @@
 - :mod:`.result`: :class:`SweepResult` (pandas table, atomic CSV/Parquet, plot).
 - :mod:`.sensitivity`: Sobol and Morris indices (SALib); :mod:`.uncertainty`: Monte Carlo
   bands; :mod:`.calibration`: weighted least squares to measured data.
-- :mod:`.models`: named models (heat, heat_profiles, transport); :mod:`.tscheng1978`:
+- :mod:`.models`: named models (kiln, kiln_profiles, transport); :mod:`.tscheng1978`:
   Tscheng's runs as cases and data.
 - :mod:`.ahmad2006`: the chapter-5 sensitivity study of seed 004 as a design.
 - :mod:`.examples`: cheap model functions for tests and demonstrations.

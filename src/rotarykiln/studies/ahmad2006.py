@@ -29,8 +29,8 @@ __all__ = [
 
 #: Field path -> values swept (as in the case file, with units).
 CHAPTER5_RANGES = {
-    "chemistry.residence_time": ["2000 s", "3000 s", "4500 s", "6480 s", "8000 s", "10000 s"],
-    "chemistry.gas.inlet_flow": [
+    "bed.residence_time": ["2000 s", "3000 s", "4500 s", "6480 s", "8000 s", "10000 s"],
+    "gas.flow": [
         "0.010 kg/s",
         "0.015 kg/s",
         "0.020 kg/s",
@@ -38,8 +38,8 @@ CHAPTER5_RANGES = {
         "0.045 kg/s",
         "0.060 kg/s",
     ],
-    "chemistry.feed.temperature": ["300 K", "400 K", "500 K", "600 K", "700 K"],
-    "chemistry.gas.steam_flow": [
+    "operation.feed_temperature": ["300 K", "400 K", "500 K", "600 K", "700 K"],
+    "gas.steam_flow": [
         "0.001 kg/s",
         "0.0025 kg/s",
         "0.005 kg/s",
@@ -61,10 +61,10 @@ CHAPTER5_RANGES = {
 #: achieve the reaction temperature"; with hot inlet gas more gas should heat the solid MORE
 #: (notes 004 6.3 flag this): the kiln model's answer is to be shown and explained.
 CHAPTER5_DIRECTIONS = {
-    "chemistry.residence_time": +1,
-    "chemistry.gas.inlet_flow": -1,
-    "chemistry.feed.temperature": 0,
-    "chemistry.gas.steam_flow": +1,
+    "bed.residence_time": +1,
+    "gas.flow": -1,
+    "operation.feed_temperature": 0,
+    "gas.steam_flow": +1,
     "operation.feed": -1,
 }
 
@@ -76,7 +76,7 @@ def ahmad_chapter5_design(ranges: dict | None = None) -> list[CaseSpec]:
     --------
     >>> d = ahmad_chapter5_design()
     >>> len(d), d[0].group, d[1].group
-    (29, 'base', 'chemistry.residence_time')
+    (29, 'base', 'bed.residence_time')
     """
     return one_at_a_time(ranges or CHAPTER5_RANGES)
 
@@ -98,13 +98,13 @@ def run_chapter5(max_workers: int | None = 2, ranges: dict | None = None):
     """Seed 004's chapter-5 study on the reacting kiln model (charcoal case), one table.
 
     Returns the :class:`~rotarykiln.studies.result.SweepResult` of
-    :func:`rotarykiln.kiln.reacting.reacting_sweep_model` over :func:`ahmad_chapter5_design`.
+    :func:`rotarykiln.studies.models.kiln_model` over :func:`ahmad_chapter5_design`.
     """
-    from rotarykiln.kiln.reacting import reacting_sweep_model
+    from rotarykiln.studies.models import kiln_model
     from rotarykiln.studies.runner import run_sweep
 
     return run_sweep(
-        reacting_sweep_model,
+        kiln_model,
         builtin_case("charcoal_activation"),
         ahmad_chapter5_design(ranges),
         max_workers=max_workers,
@@ -138,7 +138,7 @@ def chapter5_params(ranges: dict | None = None) -> list[str]:
     Examples
     --------
     >>> chapter5_params()[0]
-    'chemistry.residence_time=uniform(2000 s, 10000 s)'
+    'bed.residence_time=uniform(2000 s, 10000 s)'
     """
     from rotarykiln.studies.design import si_value
 
@@ -156,11 +156,11 @@ def chapter5_sobol(n: int = 32, seed: int = 0, **runner):
     :func:`~rotarykiln.studies.sensitivity.sobol_indices` (``max_workers``, ``store``...).
     Returns the :class:`~rotarykiln.studies.sensitivity.SensitivityResult`.
     """
-    from rotarykiln.kiln.reacting import reacting_sweep_model
+    from rotarykiln.studies.models import kiln_model
     from rotarykiln.studies.sensitivity import sobol_indices
 
     return sobol_indices(
-        reacting_sweep_model,
+        kiln_model,
         builtin_case("charcoal_activation"),
         chapter5_params(),
         "burn_off_percent",

@@ -6,10 +6,10 @@ written ``bed``, ``gas temperature``...) at a position z (m from the solids inle
 output of the model (``bed_outlet_temperature_K``, ``shell_loss_W``...) with z empty. Values and
 uncertainties (one standard deviation) are in the output's unit (K for temperatures).
 
-The chosen case fields (``"heat.gas.flow=20 kg/h"``, optionally with bounds
-``"heat.wall_emissivity=0.8 [0.3, 1]"``) are varied by ``scipy.optimize.least_squares`` on the
+The chosen case fields (``"gas.flow=20 kg/h"``, optionally with bounds
+``"wall.emissivity=0.8 [0.3, 1]"``) are varied by ``scipy.optimize.least_squares`` on the
 residuals ``(model - value) / uncertainty``; the model's profiles (outputs ``"<quantity>@<z>"``,
-e.g. :func:`~rotarykiln.studies.models.heat_profile_model`) are interpolated linearly to the
+e.g. :func:`~rotarykiln.studies.models.kiln_profile_model`) are interpolated linearly to the
 measured positions. The covariance of the parameters is ``(J^T J)^-1`` of the weighted Jacobian
 at the optimum (stated uncertainties taken as true: ``absolute_sigma=True``), or scaled by the
 reduced chi-square (``absolute_sigma=False``, when the uncertainties are only relative weights).
@@ -85,7 +85,7 @@ def parse_fit(text: str) -> FitParam:
     Parameters
     ----------
     text : str
-        E.g. ``"heat.gas.flow=20 kg/h"``, ``"heat.wall_emissivity=0.8 [0.3, 1]"``.
+        E.g. ``"gas.flow=20 kg/h"``, ``"wall.emissivity=0.8 [0.3, 1]"``.
 
     Returns
     -------
@@ -94,8 +94,8 @@ def parse_fit(text: str) -> FitParam:
 
     Examples
     --------
-    >>> parse_fit("heat.gas.flow=20 kg/h [10 kg/h, 0.01 kg/s]")
-    FitParam(path='heat.gas.flow', x0=20.0, unit='kg/h', lower=10.0, upper=36.0)
+    >>> parse_fit("gas.flow=20 kg/h [10 kg/h, 0.01 kg/s]")
+    FitParam(path='gas.flow', x0=20.0, unit='kg/h', lower=10.0, upper=36.0)
 
     References
     ----------
@@ -104,7 +104,7 @@ def parse_fit(text: str) -> FitParam:
     path, sep, spec = str(text).partition("=")
     path = path.strip()
     if not sep or not path:
-        raise InputError("--fit", text, 'PATH=START [LOW, HIGH], e.g. "heat.gas.flow=20 kg/h"')
+        raise InputError("--fit", text, 'PATH=START [LOW, HIGH], e.g. "gas.flow=20 kg/h"')
     m = _FIT.match(spec)
     if m is None:
         raise InputError(path, spec, 'a start value with its unit, bounds optional: "0.8 [0.3, 1]"')
@@ -302,7 +302,7 @@ class _Predictor:
                 known = list(profiles) + scalars
                 hint = difflib.get_close_matches(q, known, n=1)
                 mean = f"; did you mean {hint[0]}?" if hint else ""
-                prof = ", ".join(profiles) or "none (use a profile model such as heat_profiles)"
+                prof = ", ".join(profiles) or "none (use a profile model such as kiln_profiles)"
                 raise InputError(
                     row, q, f"a quantity of the model (profiles: {prof}; or a scalar output){mean}"
                 )

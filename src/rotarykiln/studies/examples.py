@@ -59,14 +59,13 @@ def ortiz_isothermal_burn_off(case: dict) -> dict:
 
     with :math:`t_r f_r` the time spent in the reaction zone (a fraction ``f_r`` of the residence
     time, seed 004: from 2.5 m to 3.7 m, f_r = 1.2/3.7). Fields (the built-in case's):
-    ``chemistry.residence_time``, ``chemistry.gas.steam_flow``; stand-in settings (optional,
+    ``bed.residence_time``, ``gas.steam_flow``; stand-in settings (optional,
     top-level ``standin`` mapping): ``reaction_zone_temperature`` (default 1150 K) and
     ``reaction_zone_fraction``. A stand-in for the kiln model; it shows the directions of seed
     004 Figs. 5.1 and 5.4 only (no heat balance: no effect of gas or solid flow).
     """
-    ch = case["chemistry"]
-    t = to_si("chemistry.residence_time", ch["residence_time"], "time")
-    qa = to_si("chemistry.gas.steam_flow", ch["gas"]["steam_flow"], "mass flow")
+    t = to_si("bed.residence_time", case["bed"]["residence_time"], "time")
+    qa = to_si("gas.steam_flow", case["gas"]["steam_flow"], "mass flow")
     sd = case.get("standin", {})
     T = to_si(
         "standin.reaction_zone_temperature",

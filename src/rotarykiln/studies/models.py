@@ -1,6 +1,6 @@
 """Named models for sweeps: ``case dict -> dict of scalars``, picklable for worker processes.
 
-``rotarykiln sweep --model heat`` looks the name up in :data:`MODELS`; any other model is given as
+``rotarykiln sweep --model kiln`` looks the name up in :data:`MODELS`; any other model is given as
 ``module:function``.
 """
 
@@ -11,13 +11,13 @@ from collections.abc import Callable, Mapping
 __all__ = [
     "MODELS",
     "PROFILE_POINTS",
-    "heat_model",
-    "heat_profile_model",
+    "kiln_model",
+    "kiln_profile_model",
     "profile_columns",
     "transport_model",
 ]
 
-#: Positions of the axial profiles of :func:`heat_profile_model` (evenly spaced, ends included).
+#: Positions of the axial profiles of :func:`kiln_profile_model` (evenly spaced, ends included).
 PROFILE_POINTS = 41
 
 
@@ -25,19 +25,23 @@ def _scalars(summary: Mapping) -> dict:
     return {k: v for k, v in summary.items() if isinstance(v, int | float | str | bool)}
 
 
-def heat_model(case: dict) -> dict:
-    """Steady heat model of a case with a ``heat:`` section: its summary (outlet temperatures,
-    heat flows, shell loss, efficiency, energy closure, Newton iterations)."""
+def kiln_model(case: dict) -> dict:
+    """Steady kiln model of a case (:func:`rotarykiln.kiln.run.run_kiln_case`): its summary
+    as scalars (outlet temperatures, heat flows, shell loss, efficiency, conversions and
+    yields of a reacting bed, balances, Newton iterations; NaN values left out)."""
+    import math
+
     from rotarykiln.case import parse_case
-    from rotarykiln.kiln.run import run_heat_case
+    from rotarykiln.kiln.run import run_kiln_case
 
-    summary = run_heat_case(parse_case(case)).summary()
+    summary = run_kiln_case(parse_case(case)).summary()
     summary.pop("name", None)
-    return _scalars(summary)
+    out = _scalars(summary)
+    return {k: v for k, v in out.items() if not (isinstance(v, float) and math.isnan(v))}
 
 
-def heat_profile_model(case: dict) -> dict:
-    """Steady heat model: the summary of :func:`heat_model` plus the axial profiles as scalars.
+def kiln_profile_model(case: dict) -> dict:
+    """Steady kiln model: the summary of :func:`kiln_model` plus the axial profiles as scalars.
 
     Profiles at :data:`PROFILE_POINTS` evenly spaced positions z (m, from the solids inlet),
     named ``"<quantity>@<z>"`` with quantities ``bed_temperature``, ``gas_temperature``,
@@ -48,9 +52,9 @@ def heat_profile_model(case: dict) -> dict:
     import numpy as np
 
     from rotarykiln.case import parse_case
-    from rotarykiln.kiln.run import run_heat_case
+    from rotarykiln.kiln.run import run_kiln_case
 
-    sol = run_heat_case(parse_case(case))
+    sol = run_kiln_case(parse_case(case))
     summary = sol.summary()
     summary.pop("name", None)
     out = _scalars(summary)
@@ -103,8 +107,8 @@ def transport_model(case: dict) -> dict:
 
 
 MODELS: dict[str, Callable[[dict], dict]] = {
-    "heat": heat_model,
-    "heat_profiles": heat_profile_model,
+    "kiln": kiln_model,
+    "kiln_profiles": kiln_profile_model,
     "transport": transport_model,
 }
 """Model name -> function, for ``rotarykiln sweep --model NAME``."""

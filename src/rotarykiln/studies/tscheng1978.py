@@ -32,7 +32,7 @@ def tscheng_cases(runs=None) -> dict[str, dict]:
     Examples
     --------
     >>> cases = tscheng_cases()
-    >>> len(cases), cases["A11"]["operation"]["speed"], cases["A11"]["heat"]["gas"]["flow"]
+    >>> len(cases), cases["A11"]["operation"]["speed"], cases["A11"]["gas"]["flow"]
     (44, '3.0 rpm', '24.6 kg/h')
     """
     table = _runs()
@@ -46,9 +46,9 @@ def tscheng_cases(runs=None) -> dict[str, dict]:
         c["operation"]["speed"] = f"{float(r['RPM'])} rpm"
         c["operation"]["feed"] = f"{float(r['Solid flow (kg/hr)'])} kg/h"
         c["bed"]["fill"] = float(r["Solid loading (%)"]) / 100.0
-        c["heat"]["gas"]["flow"] = f"{float(r['Air flow (kg/hr)'])} kg/h"
-        c["heat"]["gas"]["inlet_temperature"] = f"{float(r['T-g-5'])} K"
-        m = c["heat"]["measurements"]
+        c["gas"]["flow"] = f"{float(r['Air flow (kg/hr)'])} kg/h"
+        c["gas"]["temperature"] = f"{float(r['T-g-5'])} K"
+        m = c["measurements"]
         m["t_gas"] = [f"{float(r[f'T-g-{i}'])} K" for i in range(1, 6)]
         m["t_bed"] = [f"{float(r[f'T-s-{i}'])} K" for i in range(1, 6)]
         m["t_wall"] = [f"{float(r[f'T-w-{i}'])} K" for i in range(1, 5)]

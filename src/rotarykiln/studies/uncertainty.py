@@ -3,7 +3,7 @@
 The nominal case (the base case as given) and ``n`` samples of the :class:`~.design.Param`
 distributions (Latin hypercube by default) run through the study runner; every scalar output
 gets its mean, standard deviation and percentiles, and every axial profile (outputs named
-``"<quantity>@<z>"``, e.g. from :func:`~rotarykiln.studies.models.heat_profile_model`) its
+``"<quantity>@<z>"``, e.g. from :func:`~rotarykiln.studies.models.kiln_profile_model`) its
 5-50-95 % band, drawn around the nominal profile.
 """
 

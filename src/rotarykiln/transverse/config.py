@@ -109,13 +109,13 @@ def retort_spec_from_case(case) -> Any:
     sec = getattr(case, "transverse", None)
     if sec is None:
         raise InputError("transverse", message="transverse: missing (required section)")
-    if case.bed is None:
+    if case.bed is None or case.bed.mean_fill is None:
         raise InputError("bed.fill", message="bed.fill: missing (required for transverse)")
     kw = dict(
         name=case.name,
         drum_diameter=case.kiln.diameter,
         omega=case.operation.speed,
-        fill=case.bed.fill,
+        fill=case.bed.mean_fill,
         shale_size=sec.shale.mean_size,
         ash_size=sec.ash.mean_size,
         shale_temperature=sec.shale.temperature,
