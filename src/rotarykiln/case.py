@@ -168,6 +168,7 @@ HeatTransferCoefficient = quantity(
     "heat transfer coefficient", ge=0, le=1e6, shown="in [0, 1e6] W/(m2 K)"
 )
 
+SootFraction = quantity("fraction", ge=0, le=1e-4, shown="in [0, 1e-4]")
 Slope = quantity("angle", ge=0, lt=math.radians(45), shown="in [0, 45) deg")
 ReposeAngle = quantity("angle", gt=0, lt=math.radians(90), shown="in (0, 90) deg")
 FillFraction = quantity("fraction", gt=0, lt=1, shown="in (0, 1)")
@@ -317,6 +318,8 @@ class Burner(Section):
     ``reference_temperature`` (and ``reference_pressure``, default 1 atm).
     ``combustion``: ``instant`` (burn-out at the burner) or ``burnout`` (mixing-limited along
     the flame, which needs ``flame_length`` or ``nozzle_diameter``).
+    ``soot_volume_fraction``: a luminous flame (soot volume fraction f_v over the flame length,
+    e.g. 5e-8 for natural gas; default 0, a non-luminous flame), which needs the flame length.
     """
 
     fuel: Annotated[str, BeforeValidator(_fuel_composition)] = (
@@ -331,6 +334,7 @@ class Burner(Section):
     nozzle_diameter: Length | None = None
     combustion: Literal["instant", "burnout"] = "instant"
     flame_length: Length | None = None
+    soot_volume_fraction: SootFraction = 0.0
 
     @model_validator(mode="after")
     def _flows(self):

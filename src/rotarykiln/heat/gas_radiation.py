@@ -6,6 +6,8 @@ r"""Emissivity of CO2/H2O gas mixtures (weighted sum of grey gases) and the free
 - :func:`johansson_wsgg_emissivity`: Johansson et al. (2011), 4 grey gases, any
   :math:`MR = p_w/p_c` in 0.125-2.
 - :func:`gorog_mean_beam_length`: :math:`L_e = 0.95 D (1 - h/D)`.
+- :func:`soot_emissivity`: grey soot of a luminous flame, and :func:`combined_emissivity`
+  of gas and soot.
 
 Partial pressures in Pa (converted to atm inside: the models are fitted in atm m).
 Coefficients: team source folder reference/closures.md 3a, 3c, 3d.
@@ -24,7 +26,13 @@ from rotarykiln.errors import (
 )
 from rotarykiln.heat._util import span
 
-__all__ = ["smith_wsgg_emissivity", "johansson_wsgg_emissivity", "gorog_mean_beam_length"]
+__all__ = [
+    "combined_emissivity",
+    "gorog_mean_beam_length",
+    "johansson_wsgg_emissivity",
+    "smith_wsgg_emissivity",
+    "soot_emissivity",
+]
 
 ATM = 101325.0
 
@@ -202,3 +210,78 @@ def gorog_mean_beam_length(diameter, bed_depth):
     D = np.asarray(diameter, dtype=float)
     check_range("bed_depth/diameter", np.asarray(bed_depth) / D, 0.0, 1.0, closed_low=True)
     return 0.95 * D * (1.0 - np.asarray(bed_depth, dtype=float) / D)
+
+
+def soot_emissivity(volume_fraction, temperature, path_length):
+    r"""Emissivity of the soot of a luminous flame, grey with the Planck-mean absorption.
+
+    .. math:: \kappa_s = \frac{3.72\,C_0}{C_2}\,f_v\,T \approx 1810\,f_v T\ \mathrm{m^{-1}},
+              \qquad \varepsilon_s = 1 - e^{-\kappa_s L}
+
+    with :math:`C_0 = 7` (the soot optical constant of the Rayleigh limit) and :math:`C_2` =
+    0.014388 m K, the second radiation constant.
+
+    Parameters
+    ----------
+    volume_fraction : float or array
+        Soot volume fraction :math:`f_v` (-), >= 0. Natural-gas flames: about 1e-8 to 1e-7;
+        oil and coal flames up to 1e-6.
+    temperature : float or array
+        Flame (gas) temperature (K), > 0.
+    path_length : float or array
+        Mean beam length (m), >= 0.
+
+    Returns
+    -------
+    float or array
+        :math:`\varepsilon_s` (-), in [0, 1).
+
+    Examples
+    --------
+    >>> round(float(soot_emissivity(5e-8, 1800.0, 0.35)), 3)  # flames.md section 4
+    0.055
+    >>> float(soot_emissivity(0.0, 1800.0, 0.35))
+    0.0
+
+    References
+    ----------
+    Sazhin (1994), An approximation for the absorption coefficient of soot in a radiating gas,
+    Fluent Europe; Modest, Radiative Heat Transfer, 3rd ed. (2013), section 11.8 (Planck-mean
+    absorption of small soot particles); team notes reference/flames.md section 4.
+    """
+    f_v = np.asarray(volume_fraction, dtype=float)
+    T = np.asarray(temperature, dtype=float)
+    L = np.asarray(path_length, dtype=float)
+    check_nonnegative("soot volume fraction", float(np.min(f_v)))
+    check_positive("temperature", float(np.min(T)), "K")
+    check_nonnegative("path_length", float(np.min(L)), "m")
+    kappa = 3.72 * 7.0 / 0.014388 * f_v * T
+    return -np.expm1(-kappa * L)
+
+
+def combined_emissivity(eps_gas, eps_soot):
+    r"""Emissivity of a gas and the soot in it, each grey and independent.
+
+    .. math:: \varepsilon = \varepsilon_g + \varepsilon_s - \varepsilon_g\,\varepsilon_s
+
+    Parameters
+    ----------
+    eps_gas, eps_soot : float or array
+        Emissivities (-) in [0, 1].
+
+    Returns
+    -------
+    float or array
+        The combined emissivity (-).
+
+    Examples
+    --------
+    >>> round(combined_emissivity(0.2, 0.055), 3)
+    0.244
+
+    References
+    ----------
+    Hottel & Sarofim, Radiative Transfer (1967): overlap of independent grey absorbers; team
+    notes reference/flames.md section 4.
+    """
+    return eps_gas + eps_soot - eps_gas * eps_soot

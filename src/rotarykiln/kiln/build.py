@@ -231,6 +231,8 @@ def _inlet_gas(case) -> dict:
             )
         flame = fire(burner_from_case(b), case.kiln.diameter, length)
         p = flame.products
+        if b.soot_volume_fraction > 0:
+            out["soot"] = _luminous_zone(b, flame, length, case.operation.counter_current)
         out.update(
             gas_in=_mass_flows(p.composition, p.mass_flow),
             gas_in_mole=p.composition,
@@ -257,6 +259,21 @@ def _inlet_gas(case) -> dict:
         gas_in=gas_in, gas_in_mole=mole, gas_flow=g.flow, gas_inlet_temperature=g.temperature
     )
     return out
+
+
+def _luminous_zone(section, flame, length: float, counter_current: bool):
+    """(f_v, z_start, z_end) of a sooting flame: the flame length from the burner end."""
+    lf = flame.flame_length
+    if lf is None:
+        raise InputError(
+            "burner.soot_volume_fraction",
+            section.soot_volume_fraction,
+            "0 without burner.flame_length or burner.nozzle_diameter (the luminous zone is "
+            "the flame)",
+        )
+    lf = min(float(lf), length)
+    zone = (length - lf, length) if counter_current else (0.0, lf)
+    return (float(section.soot_volume_fraction), *zone)
 
 
 def _mass_flows(composition, flow: float) -> dict[str, float]:

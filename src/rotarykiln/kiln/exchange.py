@@ -44,7 +44,12 @@ from rotarykiln.heat.convection import (
     tscheng_watkinson_gas_bed_nusselt,
     tscheng_watkinson_gas_wall_nusselt,
 )
-from rotarykiln.heat.gas_radiation import johansson_wsgg_emissivity, smith_wsgg_emissivity
+from rotarykiln.heat.gas_radiation import (
+    combined_emissivity,
+    johansson_wsgg_emissivity,
+    smith_wsgg_emissivity,
+    soot_emissivity,
+)
 from rotarykiln.heat.radiation import freeboard_radiation
 from rotarykiln.kiln.model import Closures
 from rotarykiln.materials.gas import GasPropertyTable
@@ -173,7 +178,8 @@ class CrossSectionExchange:
     W/(m K) or None, ``solid_conductivity`` W/(m K) and ``void_fraction`` for the
     bed-conductivity models); ``emissivity_law`` (a, b 1/K, min) for
     :math:`\\varepsilon_g = \\max(a + bT, min)`, which replaces the closure's gas emissivity when
-    given.
+    given; ``soot_fv`` (-, per cell, or None): the soot volume fraction of a luminous flame,
+    whose soot emissivity combines with the gas's.
 
     Examples
     --------
@@ -199,10 +205,20 @@ class CrossSectionExchange:
     eps_wall: float
     bed: object
     emissivity_law: tuple[float, float, float] | None = None
+    soot_fv: np.ndarray | None = None
 
     @classmethod
     def of(cls, kiln, grid, bed, emissivity_law=None) -> CrossSectionExchange:
-        """For a kiln model with ``closures``, ``length``, ``radius``, ``omega``, ``eps_wall``."""
+        """For a kiln model with ``closures``, ``length``, ``radius``, ``omega``, ``eps_wall``
+        and ``soot`` (f_v, z_start, z_end) or None: each cell's soot volume fraction is f_v
+        times the share of the cell inside the luminous zone."""
+        soot = getattr(kiln, "soot", None)
+        fv = None
+        if soot is not None and soot[0] > 0:
+            f_v, z0, z1 = soot
+            lo, hi = grid.z_nodes[:-1], grid.z_nodes[1:]
+            inside = np.clip(np.minimum(hi, z1) - np.maximum(lo, z0), 0.0, None) / (hi - lo)
+            fv = f_v * inside
         return cls(
             kiln.closures,
             grid,
@@ -212,6 +228,7 @@ class CrossSectionExchange:
             kiln.eps_wall,
             bed,
             emissivity_law,
+            fv,
         )
 
     def __post_init__(self):
@@ -241,27 +258,35 @@ class CrossSectionExchange:
         )
 
     def gas_emissivity(self, gas: FreeboardGas, t_gas, check=False):
-        """Gas emissivity (-) by the ``gas_emissivity`` closure, capped at 0.95 (the number 0
-        without radiation or without CO2 and H2O)."""
+        """Gas emissivity (-) by the ``gas_emissivity`` closure, combined with the soot of a
+        luminous zone (``soot_fv``), capped at 0.95 (the number 0 without radiation, or without
+        CO2, H2O and soot)."""
         c = self.closures
         if not c.radiation:
             return 0.0
+        eps = self._molecular_emissivity(gas, t_gas, check)
+        if self.soot_fv is not None:
+            L = self.geometry.beam_length
+            eps_s = soot_emissivity(self.soot_fv, np.maximum(t_gas, 1.0), L)
+            eps = combined_emissivity(eps, eps_s)
+        return np.clip(eps, 0.0, EPS_GAS_MAX)
+
+    def _molecular_emissivity(self, gas: FreeboardGas, t_gas, check=False):
+        """Emissivity (-) of the CO2 and H2O of the gas (or the given law or constant)."""
+        c = self.closures
         if self.emissivity_law is not None:
             a, b, lo = self.emissivity_law
-            eps = np.maximum(a + b * t_gas, lo)
-        elif not isinstance(c.gas_emissivity, str):
-            eps = float(c.gas_emissivity) * np.ones_like(t_gas)
-        else:
-            p_w, p_c = gas.partial_pressures()
-            L = self.geometry.beam_length
-            p_sum = p_w + p_c
-            if p_sum <= 0 if np.ndim(p_sum) == 0 else not np.any(p_sum > 0):
-                return 0.0  # no CO2 and no H2O: transparent
-            if c.gas_emissivity == "johansson2011":
-                eps = johansson_wsgg_emissivity(t_gas, p_w, p_c, L, check=check)
-            else:
-                eps = smith_wsgg_emissivity(t_gas, (p_w + p_c) * L, "pw/pc=2", check=check)
-        return np.clip(eps, 0.0, EPS_GAS_MAX)
+            return np.maximum(a + b * t_gas, lo)
+        if not isinstance(c.gas_emissivity, str):
+            return float(c.gas_emissivity) * np.ones_like(t_gas)
+        p_w, p_c = gas.partial_pressures()
+        L = self.geometry.beam_length
+        p_sum = p_w + p_c
+        if p_sum <= 0 if np.ndim(p_sum) == 0 else not np.any(p_sum > 0):
+            return 0.0  # no CO2 and no H2O: transparent
+        if c.gas_emissivity == "johansson2011":
+            return johansson_wsgg_emissivity(t_gas, p_w, p_c, L, check=check)
+        return smith_wsgg_emissivity(t_gas, (p_w + p_c) * L, "pw/pc=2", check=check)
 
     def coefficients(self, gas: FreeboardGas, t_gas, t_bed, t_wall, check=False) -> dict:
         """Heat transfer coefficients (W/(m2 K)), gas emissivity and Reynolds number.

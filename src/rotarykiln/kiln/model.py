@@ -144,6 +144,9 @@ class Kiln:
     ``flame``: the :class:`~rotarykiln.kiln.flame.Flame` of a burner (heating values and jet
     numbers for the energy sheet and the summary); ``measurements``: measured profiles
     (``z_gas``, ``t_gas``, ``z_bed``, ...) overlaid on the plots.
+    ``soot``: (f_v, z_start, z_end), a luminous zone (a sooting flame) of soot volume
+    fraction f_v between z_start and z_end (m), whose grey soot emissivity adds to the gas's
+    (:func:`rotarykiln.heat.gas_radiation.soot_emissivity`); None: a non-luminous gas.
     ``bed_dispersion`` (m2/s): axial dispersion coefficient of the bed inside the balances
     (:mod:`rotarykiln.kiln.dispersion`; 0: plug flow; e.g. :math:`u L / Pe` with Pe from
     :mod:`rotarykiln.rtd.correlations`).
@@ -187,6 +190,7 @@ class Kiln:
     measurements: dict | None = None
     bed_dispersion: float = 0.0
     heaters: tuple = ()
+    soot: tuple[float, float, float] | None = None
 
     def __post_init__(self):
         check_positive("kiln.length", self.length, "m")
@@ -221,6 +225,13 @@ class Kiln:
         check_positive("wall.ambient_temperature", self.ambient_temperature, "K")
         check_positive("gas.pressure", self.pressure, "Pa")
         check_nonnegative("bed.axial_dispersion", self.bed_dispersion, "m2/s")
+        if self.soot is not None:
+            f_v, z0, z1 = self.soot
+            check_range("burner.soot_volume_fraction", f_v, 0.0, 1e-4, closed_high=True)
+            if not 0.0 <= z0 < z1 <= self.length + 1e-9:
+                raise InputError(
+                    "burner.soot_volume_fraction", (z0, z1), "a luminous zone inside the kiln"
+                )
         if self.heaters and not self.layers:
             raise InputError(
                 "wall.heaters", "given", "with a lining (the heaters sit on the shell)"
