@@ -82,6 +82,12 @@ class TransientResidual(KilnResidual):
                 "a fixed fill or residence time for the transient model (it holds the bed "
                 "profile of the case)",
             )
+        if any(z.shell_temperature is not None for z in kiln.heaters):
+            raise InputError(
+                "wall.heaters",
+                "a shell_temperature set-point",
+                "a power for the transient model (a set-point needs a controller)",
+            )
         super().__init__(kiln, n_cells)
         # reactants fed and never made (the steady model's square-root unknowns): their rate
         # laws of order < 1 are made Lipschitz below a flow of RATE_FLOOR x the feed
