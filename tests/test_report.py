@@ -85,6 +85,27 @@ def test_report_has_every_section(barr_t4):
     _, report, _ = barr_t4
     assert {"case", "warnings", "summary", "figures", "files", "version", "case-hash"} <= report.ids
     assert {"summary-case", "summary-kiln"} <= report.ids
+    # a kiln run: regime and cross-section, the energy sheet, balances and convergence
+    assert {"regime", "energy", "energy-in", "energy-out", "convergence"} <= report.ids
+
+
+def test_energy_sheet_adds_up(barr_t4):
+    out, _, summary = barr_t4
+    from rotarykiln.report_html import _energy_sheet
+
+    sheet = _energy_sheet(summary)
+    total_in = float(sheet["total_in"]["exact"])
+    total_out = float(sheet["total_out"]["exact"])
+    closure = float(sheet["closure"]["exact"])
+    assert total_in - total_out == pytest.approx(closure, abs=1e-6 * total_in)
+    assert abs(closure) < 1e-6 * total_in
+    names = [r["name"] for r in sheet["inputs"]]
+    assert "heat of combustion" in names  # a fired kiln
+    assert total_in == pytest.approx(
+        summary["kiln_energy_combustion_heat_W"]
+        + summary["kiln_energy_sensible_input_gas_W"]
+        + summary["kiln_energy_sensible_input_solids_W"]
+    )
 
 
 def test_outlet_temperature_shown_is_the_solvers(barr_t4):

@@ -3,8 +3,11 @@
 ``rotarykiln run CASE --report`` (and ``rotarykiln demo``) write ``report.html`` beside the other
 results: the case with units, the warnings raised during the run, the summary table of every
 section run (with the unit of each value), the figures the run wrote (embedded as base64 PNG or
-inline SVG), the package version and the hash of the case. The page is rendered with jinja2 from
-``rotarykiln/templates/report.html``; it loads nothing from the network.
+inline SVG), the package version and the hash of the case; for a kiln run also the regime and
+cross-section, the energy balance sheet (inputs and outputs, W and % of the input), the balances
+and the solver's convergence, and the residence time (its figures beside each). The page is
+rendered with jinja2 from ``rotarykiln/templates/report.html``; it loads nothing from the
+network.
 """
 
 from __future__ import annotations
@@ -130,6 +133,95 @@ def _figure(path: Path) -> dict[str, str]:
     return {"title": title, "file": path.name, "src": f"data:{mime};base64,{data}"}
 
 
+# the energy balance sheet of a kiln run: (summary key after "kiln_energy_", label)
+_SHEET_IN = (
+    ("sensible_input_solids_W", "solids entering (sensible, above 298.15 K)"),
+    ("sensible_input_gas_W", "gas and air entering (sensible)"),
+    ("combustion_heat_W", "heat of combustion"),
+    ("electric_heating_W", "electric heating"),
+)
+_SHEET_OUT = (
+    ("sensible_input_solids_W", "solids entering, carried through"),
+    ("heat_to_solids_sensible_W", "heat to the solids, sensible"),
+    ("heat_to_solids_reaction_W", "heat to the solids, reactions"),
+    ("shell_loss_W", "shell loss"),
+    ("exhaust_loss_W", "exhaust (sensible)"),
+)
+_CONVERGENCE = (
+    "cells",
+    "newton_iterations",
+    "residual",
+    "energy_balance_closure",
+    "element_balance_closure",
+    "energy_closure_relative",
+)
+_REGIME = (
+    "froude",
+    "fraction_of_critical",
+    "critical_speed_rpm",
+    "fill",
+    "regime",
+    "criterion",
+    "regime_by_henein",
+)
+_REGIME_FIGURES = ("regime_map", "cross_section")
+_RTD_FIGURES = ("kiln_rtd", "rtd")
+
+
+def _term(label: str, value: Any, unit: str = "", share: str = "") -> dict[str, str]:
+    exact = repr(float(value)) if isinstance(value, float) else str(value)
+    return {"name": label, "value": _shown(value), "exact": exact, "unit": unit, "share": share}
+
+
+def _energy_sheet(kiln: Mapping[str, Any]) -> dict | None:
+    """Inputs and outputs of the energy sheet of a kiln summary (W and % of the input)."""
+    get = {k.removeprefix("kiln_energy_"): v for k, v in kiln.items()}
+    if "closure_W" not in get:
+        return None
+    scale = sum(abs(float(get.get(k) or 0.0)) for k, _ in _SHEET_IN) or 1.0
+
+    def terms(spec):  # round-off (|value| < 1e-9 of the input) is not a term of the sheet
+        return [
+            (label, float(get[k])) for k, label in spec if abs(get.get(k) or 0.0) > 1e-9 * scale
+        ]
+
+    ins, outs = terms(_SHEET_IN), terms(_SHEET_OUT)
+    total = sum(v for _, v in ins) or 1.0
+
+    def rows(items):
+        return [_term(label, v, "W", f"{100.0 * v / total:.1f} %") for label, v in items]
+
+    return {
+        "inputs": rows(ins),
+        "outputs": rows(outs),
+        "total_in": _term("total in", sum(v for _, v in ins), "W", "100 %"),
+        "total_out": _term("total out", sum(v for _, v in outs), "W"),
+        "closure": _term("closure (in - out)", float(get["closure_W"]), "W"),
+        "efficiency": kiln.get("kiln_thermal_efficiency"),
+    }
+
+
+def _picked(table: Mapping[str, Any], names: Iterable[str], prefix: str = "") -> list[dict]:
+    out = []
+    for n in names:
+        key = prefix + n
+        if key in table:
+            name, unit = split_unit(n)
+            out.append(_term(name, table[key], unit))
+    return out
+
+
+def _residence(sections: Mapping[str, Mapping[str, Any]]) -> list[dict]:
+    """Residence-time rows of every section (transport, rtd, kiln)."""
+    out = []
+    for sec, table in sections.items():
+        for key, value in table.items():
+            if any(w in key for w in ("residence", "peclet", "segregated", "plug_flow")):
+                name, unit = split_unit(key)
+                out.append(_term(f"{name} ({sec})", value, unit))
+    return out
+
+
 def render_html_report(
     case,
     *,
@@ -173,6 +265,16 @@ def render_html_report(
         lstrip_blocks=True,
     )
     shown_warnings = list(dict.fromkeys(str(w) for w in warnings))
+    figs = [_figure(Path(p)) for p in figures]
+
+    def take(stems):
+        chosen = [f for f in figs if Path(f["file"]).stem in stems]
+        for f in chosen:
+            figs.remove(f)
+        return chosen
+
+    kiln = sections.get("kiln") or {}
+    regime_figs, rtd_figs = take(_REGIME_FIGURES), take(_RTD_FIGURES)
     return env.get_template("report.html").render(
         case=case,
         case_yaml=case_to_yaml(case),
@@ -184,8 +286,15 @@ def render_html_report(
         sections=[
             {"name": name, "rows": _rows(table)} for name, table in sections.items() if table
         ],
-        figures=[_figure(Path(p)) for p in figures],
+        figures=figs,
         files=sorted(files),
+        regime=_picked(sections.get("case") or {}, _REGIME)
+        + ([] if "fill" in (sections.get("case") or {}) else _picked(kiln, ("fill",), "kiln_")),
+        regime_figures=regime_figs,
+        sheet=_energy_sheet(kiln) if kiln else None,
+        convergence=_picked(kiln, _CONVERGENCE, "kiln_"),
+        residence=_residence(sections),
+        rtd_figures=rtd_figs,
     )
 
 
