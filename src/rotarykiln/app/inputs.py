@@ -52,30 +52,15 @@ MAIN_INPUTS: tuple[MainInput, ...] = (
     _row("operation.feed", "Solids feed", "mass flow"),
     _row("operation.feed_temperature", "Solids inlet temperature", "temperature"),
     _row("bed.fill", "Fill fraction", "fraction"),
+    _row("bed.residence_time", "Solids residence time", "time"),
     _row("material.bulk_density", "Bulk density", "density"),
-    # the one case schema: gas, burner and wall as top-level sections
     _row("gas.flow", "Gas flow", "gas flow"),
     _row("gas.temperature", "Gas inlet temperature", "temperature"),
-    _row("gas.inlet_temperature", "Gas inlet temperature", "temperature"),
-    _row("feed.temperature", "Solids inlet temperature", "temperature"),
     _row("burner.fuel_flow", "Fuel flow", "gas flow"),
     _row("burner.primary_air.flow", "Primary air flow", "gas flow"),
     _row("burner.secondary_air.flow", "Secondary air flow", "gas flow"),
     _row("wall.U", "Wall loss coefficient", "heat transfer coefficient"),
     _row("wall.ambient_temperature", "Ambient temperature", "temperature"),
-    # the schema before it (heat: and chemistry: sub-sections)
-    _row("heat.solid_inlet_temperature", "Solids inlet temperature", "temperature"),
-    _row("heat.gas.flow", "Gas flow", "gas flow"),
-    _row("heat.gas.inlet_temperature", "Gas inlet temperature", "temperature"),
-    _row("heat.burner.fuel_flow", "Fuel flow", "gas flow"),
-    _row("heat.burner.primary_air.flow", "Primary air flow", "gas flow"),
-    _row("heat.burner.secondary_air.flow", "Secondary air flow", "gas flow"),
-    _row("heat.ambient_temperature", "Ambient temperature", "temperature"),
-    _row("chemistry.feed.temperature", "Solids inlet temperature", "temperature"),
-    _row("chemistry.gas.inlet_flow", "Gas flow", "gas flow"),
-    _row("chemistry.gas.inlet_temperature", "Gas inlet temperature", "temperature"),
-    _row("chemistry.burner.fuel_flow", "Fuel flow", "gas flow"),
-    _row("chemistry.wall_loss.U", "Wall loss coefficient", "heat transfer coefficient"),
 )
 """The inputs the app shows, in this order, when the loaded case has them."""
 
