@@ -14,11 +14,16 @@ from rotarykiln.cli import main
 SECTIONS = {
     "case": "Case",
     "warnings": "Warnings",
+    "regime": "Regime",
+    "energy": "Energy balance",
+    "convergence": "Balances and convergence",
     "summary": "Summary",
     "figures": "Figures",
     "files": "Files",
 }
-"""Section id -> the start of its heading."""
+"""Section id -> the start of its heading: the sections a run of the demo's kiln has (others,
+such as the residence time, are checked when the header links to them)."""
+HEADINGS = {"residence": "Residence time"}
 
 
 @pytest.fixture(scope="module")
@@ -49,7 +54,8 @@ def test_demo_report_shows_every_section(browser, demo_report, screenshot):
     for ident in links:
         section = browser.find_element("id", ident)
         assert section.is_displayed(), ident
-        assert section.find_element("tag name", "h2").text.startswith(SECTIONS.get(ident, ""))
+        heading = section.find_element("tag name", "h2").text
+        assert heading.startswith({**HEADINGS, **SECTIONS}.get(ident, "")), (ident, heading)
         assert section.text.strip(), ident
 
     # the case with its units
@@ -70,8 +76,14 @@ def test_demo_report_shows_every_section(browser, demo_report, screenshot):
     ):
         assert any(k == end or k.endswith("_" + end) for k in keys), (end, sorted(keys))
 
-    # the figures: regime map, cross-section and profiles, each drawn (embedded, offline)
-    figures = find("css selector", "#figures figure")
+    # the energy balance sheet, in and out
+    energy = browser.find_element("id", "energy")
+    assert {h.text for h in energy.find_elements("tag name", "h3")} >= {"In", "Out"}
+    assert "closure" in energy.text.lower()
+
+    # the figures, wherever the report shows them: regime map, cross-section and profiles, each
+    # drawn from data embedded in the file (offline)
+    figures = find("css selector", "figure[data-file]")
     files = [f.get_attribute("data-file") for f in figures]
     assert "regime_map.png" in files and "cross_section.png" in files, files
     assert any(name.endswith("profiles.png") or "profile" in name for name in files), files
