@@ -67,7 +67,7 @@ def shift_equilibrium_constant(T):
     r"""Equilibrium constant of the water-gas shift CO + H2O = CO2 + H2.
 
     .. math:: K(T) = \exp\left(-\frac{\Delta G^\circ(T)}{RT}\right)
-              = \frac{[CO_2][H_2]}{[CO][H_2O]}
+              = \frac{c_{CO_2}\,c_{H_2}}{c_{CO}\,c_{H_2O}}
 
     from the standard Gibbs energies of GRI-Mech 3.0 (NASA polynomials), tabulated every
     10 K on 250-3500 K and interpolated in ln K.
