@@ -141,6 +141,11 @@ def wood_pyrolysis_mechanism(
     kirchhoff : bool
         Shift the heats with temperature (:class:`Mechanism`).
 
+    Returns
+    -------
+    Mechanism
+        Rates in kg/(s m), heats in J/kg of reactant.
+
     Examples
     --------
     >>> m = wood_pyrolysis_mechanism(0.69)
@@ -185,10 +190,10 @@ def mechanism_from_files(
     species : path, mapping or SpeciesTable, optional
         User species (:func:`~rotarykiln.chemistry.species.load_species`); None: the
         built-in table.
-    reactions : sequence
+    reactions : sequence of str or mapping
         Built-in reaction names, or reaction mappings (the YAML form of
         :func:`~rotarykiln.chemistry.reaction.reaction_from_dict`).
-    files : iterable of paths
+    files : iterable of Path
         YAML files with a ``reactions:`` list (and optionally a ``species:`` section, loaded
         before its reactions).
     kirchhoff : bool
@@ -209,6 +214,10 @@ def mechanism_from_files(
     ...      "E": 1.4e5}, "heat": "100 kJ/kg"}])
     >>> m.names
     ('wood_to_gas', 'lignin_to_char')
+
+    References
+    ----------
+    The YAML forms of docs/chemistry.md (reactions) and docs/pyrolysis.md (species).
     """
     if isinstance(species, SpeciesTable):
         sp = species

@@ -219,6 +219,20 @@ def thermo_from_dict(name: str, spec: Mapping, molar_mass: float) -> SpeciesTher
     number of coefficients, a range that is not increasing, and a c_p that is not positive
     everywhere in the stated range.
 
+    Parameters
+    ----------
+    name : str
+        Species name (in messages).
+    spec : mapping
+        The ``cp`` mapping of the species (T in K; c_p per mol or per kg as the form says).
+    molar_mass : float, kg/mol
+        Turns molar forms into per-kg values.
+
+    Returns
+    -------
+    SpeciesThermo, J/(kg K)
+        c_p(T) in J/(kg K) and the sensible enthalpy in J/kg.
+
     Examples
     --------
     >>> th = thermo_from_dict("char", {"polynomial": {"T_range": [298, 1200],
@@ -230,6 +244,10 @@ def thermo_from_dict(name: str, spec: Mapping, molar_mass: float) -> SpeciesTher
     Traceback (most recent call last):
     ...
     rotarykiln.errors.InputError: species.x.cp.polynomial: c_p -6936 J/(kg K) at 1200 K is not positive over T_range [298, 1200] K
+
+    References
+    ----------
+    B.J. McBride, S. Gordon, M.A. Reno, NASA TM-4513 (1993); NIST Chemistry WebBook (Shomate).
     """
     f = f"species.{name}.cp"
     if not isinstance(spec, Mapping):
