@@ -15,7 +15,6 @@ from __future__ import annotations
 import base64
 import datetime as _dt
 import os
-import re
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
@@ -81,21 +80,15 @@ def split_unit(key: str) -> tuple[str, str]:
     ('kiln gas outlet flow', 'kg/s')
     >>> split_unit("rtd_dispersion_m2_s")
     ('rtd dispersion', 'm2/s')
-    >>> split_unit("onset_T_bed_K_drying_ahmad")
-    ('onset T bed (drying ahmad)', 'K')
+    >>> split_unit("drying_ahmad_onset_T_bed_K")
+    ('drying ahmad onset T bed', 'K')
     >>> split_unit("froude")
     ('froude', '')
     """
     for suffix, unit in _UNIT_SUFFIXES:
         if key.endswith(suffix) and len(key) > len(suffix):
             return key[: -len(suffix)].replace("_", " "), unit
-    infix = _INFIX_UNIT.match(key)  # "onset_z_m_drying_ahmad": the unit, then a reaction name
-    if infix:
-        return f"{infix['name']} ({infix['what']})".replace("_", " "), infix["unit"]
     return key.replace("_", " "), ""
-
-
-_INFIX_UNIT = re.compile(r"^(?P<name>.+?_(?:z|T_bed))_(?P<unit>m|K)_(?P<what>\w+)$")
 
 
 def _shown(value: Any) -> str:

@@ -193,9 +193,9 @@ class KilnSolution:
                     )
         for r in self.reaction_rates:
             z_on, t_on = self.onset(r)
-            out[f"onset_z_m_{r}"] = z_on
-            out[f"onset_T_bed_K_{r}"] = t_on
-            out[f"end_z_m_{r}"] = self.end(r)
+            out[f"{r}_onset_z_m"] = z_on
+            out[f"{r}_onset_T_bed_K"] = t_on
+            out[f"{r}_end_z_m"] = self.end(r)
         return out
 
     def to_frame(self) -> pd.DataFrame:
