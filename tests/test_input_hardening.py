@@ -368,14 +368,9 @@ def test_half_angle_out_of_range_says_degrees(angle, capsys):
 
 
 def test_out_folder_checked_writable_before_solving(tmp_path, monkeypatch, capsys):
-    import tempfile
+    from rotarykiln import cli, outputs
 
-    from rotarykiln import cli
-
-    def refuse(*args, **kwargs):
-        raise PermissionError(13, "Permission denied")
-
-    monkeypatch.setattr(tempfile, "NamedTemporaryFile", refuse)
+    monkeypatch.setattr(outputs.os, "access", lambda path, mode: False)  # a read-only folder
     code = cli.main(["run", "tscheng_A16", "--out", str(tmp_path / "out")])
     err = capsys.readouterr().err
     assert code == 2 and "--out: cannot write in" in err and "Traceback" not in err

@@ -5,13 +5,21 @@ Layers (see docs/architecture.md): ``units``/``errors`` at the bottom, ``geometr
 composing them, and ``case``/``cli``/``plot`` talking to people.
 """
 
-from importlib.metadata import PackageNotFoundError, version
-
-from rotarykiln.errors import ConvergenceError, InputError, OutOfRangeWarning
-
-try:  # the one source of the version is pyproject.toml, read from the installed metadata
-    __version__ = version("rotarykiln")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree not installed
-    __version__ = "0+unknown"
-
+# Nothing heavy is imported here (numpy comes with the first model or error used): the
+# ``rotarykiln`` command sets its signal handlers a few milliseconds after Python starts.
 __all__ = ["ConvergenceError", "InputError", "OutOfRangeWarning", "__version__"]
+
+
+def __getattr__(name: str):
+    if name in ("ConvergenceError", "InputError", "OutOfRangeWarning"):
+        from rotarykiln import errors
+
+        return getattr(errors, name)
+    if name == "__version__":
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:  # the one source of the version is pyproject.toml, read from the installed metadata
+            return version("rotarykiln")
+        except PackageNotFoundError:  # pragma: no cover - a source tree not installed
+            return "0+unknown"
+    raise AttributeError(f"module 'rotarykiln' has no attribute {name!r}")

@@ -18,8 +18,8 @@ import pkgutil
 import sys
 import warnings
 
-from rotarykiln import __version__, commands
-from rotarykiln.errors import ConvergenceError, InputError
+# light imports only: the signal handlers (commands._signals) are set a few ms after start
+from rotarykiln.commands._signals import handled, signal_exit
 
 __all__ = ["build_parser", "main"]
 
@@ -32,6 +32,8 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from rotarykiln import __version__, commands
+
     parser = _Parser(
         prog="rotarykiln",
         description="Simulate rotary kilns and rotating drums. Quantities take units: "
@@ -58,6 +60,25 @@ def _show_warning(message, category, filename, lineno, file=None, line=None):
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run the command line ``argv`` (default: ``sys.argv[1:]``); the exit code.
+
+    SIGINT and SIGTERM print one line (``rotarykiln: interrupted`` / ``terminated``) and give
+    130 / 143, never a traceback (:mod:`rotarykiln.commands._signals`).
+    """
+    # called as the program (argv from sys.argv): a signal after the end is ignored, not a
+    # traceback of the interpreter's shutdown; called in-process, the caller's handlers return
+    with handled(at_exit_ignore=argv is None):
+        try:
+            return _main(argv)
+        except KeyboardInterrupt as exc:
+            code, text = signal_exit(exc)
+            print(f"rotarykiln: {text}", file=sys.stderr)
+            return code
+
+
+def _main(argv: list[str] | None) -> int:
+    from rotarykiln.errors import ConvergenceError, InputError
+
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):
@@ -74,9 +95,6 @@ def main(argv: list[str] | None = None) -> int:
     except ConvergenceError as exc:
         print(f"rotarykiln {args.command}: solver failed: {exc}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        print("rotarykiln: interrupted", file=sys.stderr)
-        return 130
     except BrokenPipeError:  # output piped into a reader that closed early (e.g. `| head`)
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 141

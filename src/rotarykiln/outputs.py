@@ -1,16 +1,25 @@
-"""Atomic output writers: a file is either written whole or not at all.
+"""Atomic output writers: a file is either written whole or not at all; a run's files as a set.
 
 Each writer writes to a temporary file in the destination folder, then ``os.replace`` s it over the
 target, so an interrupted run never leaves a truncated result behind.
+
+:func:`output_set` goes one step further for a whole run (``rotarykiln run``): the run writes into a
+staging folder, and only a complete set of files is moved into the output folder, replacing the
+files of the previous run there (named in its manifest ``run_files.json``); see docs/hardening.md
+for the exact guarantee under SIGINT, SIGTERM and SIGKILL.
 """
 
 from __future__ import annotations
 
 import contextlib
 import contextvars
+import hashlib
 import json
 import os
+import shutil
+import signal
 import tempfile
+import threading
 import warnings
 from collections.abc import Callable
 from pathlib import Path
@@ -22,7 +31,10 @@ import pandas as pd
 from rotarykiln.errors import InputError
 
 __all__ = [
+    "MANIFEST",
     "atomic_path",
+    "output_set",
+    "prepare_output_folder",
     "save_figure_atomic",
     "write_frame_atomic",
     "write_json_atomic",
@@ -125,3 +137,237 @@ def save_figure_atomic(path: str | os.PathLike, fig, **savefig_kwargs) -> Path |
     except Exception as exc:  # a rendering failure must not lose the run's tables
         warnings.warn(f"figure {Path(path).name} not written: {exc}", RuntimeWarning, stacklevel=2)
         return None
+
+
+# --------------------------------------------------------------------------------------------
+# A run's output set: staged beside the output folder, committed as a whole.
+
+#: The manifest a committed run leaves in its output folder: ``{"files": [...]}``, the names of
+#: the files of that run (the manifest itself not included). The next run into the folder
+#: replaces exactly these files; every other file there (the user's) is never touched.
+MANIFEST = "run_files.json"
+
+_STAGING = ".rotarykiln-staging-"  # + <key of the output folder>-<pid>-<random>
+_JOURNAL = "commit.json"  # in the staging folder: written at the commit point
+_FILES = "files"  # in the staging folder: the run's outputs
+
+
+def _folder_key(folder: Path) -> str:
+    return hashlib.sha1(str(folder).encode("utf-8", "surrogateescape")).hexdigest()[:12]
+
+
+def _staging_base(folder: Path) -> Path:
+    """Where the staging folders of ``folder`` live: beside it (same file system, so a rename
+    moves a file in atomically, and a SIGKILL leaves nothing inside ``folder``), or inside it when
+    its parent cannot be written or lies on another file system (``folder`` is a mount point)."""
+    parent = folder.parent
+    if parent == folder:
+        return folder
+    try:
+        same_device = parent.stat().st_dev == folder.stat().st_dev
+    except OSError:
+        return folder
+    if same_device and os.access(parent, os.W_OK | os.X_OK):
+        return parent
+    return folder
+
+
+@contextlib.contextmanager
+def _locked(path: Path):
+    """An exclusive ``flock`` on the folder ``path`` (released on exit or when the process dies)."""
+    import fcntl
+
+    fd = os.open(path, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)  # releases the lock
+
+
+def _try_lock(path: Path) -> int | None:
+    """An fd holding an exclusive non-blocking ``flock`` on ``path``, or None if it is held."""
+    import fcntl
+
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_DIRECTORY)
+    except OSError:
+        return None
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        os.close(fd)
+        return None
+    return fd
+
+
+@contextlib.contextmanager
+def _signals_deferred():
+    """SIGINT and SIGTERM received inside are held and delivered on exit (main thread only):
+    the few renames of a commit are never cut in the middle by them."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    pending: list[int] = []
+    sigs = (signal.SIGINT, signal.SIGTERM)
+    previous = {s: signal.getsignal(s) for s in sigs}
+    try:
+        for s in sigs:
+            signal.signal(s, lambda signum, frame: pending.append(signum))
+        yield
+    finally:
+        for s in sigs:
+            signal.signal(s, previous[s])
+        for s in dict.fromkeys(pending):  # delivered now, to the handlers of the program
+            signal.raise_signal(s)
+
+
+def _manifest_names(folder: Path) -> list[str]:
+    """Files the previous run wrote into ``folder`` (its manifest), [] if none or unreadable."""
+    try:
+        names = json.loads((folder / MANIFEST).read_text(encoding="utf-8")).get("files", [])
+    except (OSError, ValueError, AttributeError):
+        return []
+    if not isinstance(names, list):
+        return []
+    return [
+        n
+        for n in names
+        if isinstance(n, str)
+        and n
+        and "/" not in n
+        and "\0" not in n
+        and n[0] != "."
+        and n != MANIFEST
+    ]
+
+
+def _roll_forward(staging: Path, folder: Path) -> None:
+    """Finish the commit journaled in ``staging`` (idempotent): move its files into ``folder``
+    (the manifest last), remove the previous run's files it replaces."""
+    journal = json.loads((staging / _JOURNAL).read_text(encoding="utf-8"))
+    for name in journal["files"]:
+        src = staging / _FILES / name
+        if src.exists():
+            os.replace(src, folder / name)
+    for name in journal["remove"]:
+        (folder / name).unlink(missing_ok=True)
+
+
+def _recover(folder: Path, base: Path) -> None:
+    """Deal with the staging folders of ``folder`` left by runs that died (SIGKILL, power loss):
+    one that had reached its commit point is completed, any other removed. Called with the lock
+    of ``folder`` held; a staging folder still locked belongs to a live run and is left alone."""
+    prefix = f"{_STAGING}{_folder_key(folder)}-"
+    try:
+        entries = [p for p in base.iterdir() if p.name.startswith(prefix) and p.is_dir()]
+    except OSError:
+        return
+    for staging in entries:
+        fd = _try_lock(staging)
+        if fd is None:
+            continue
+        try:
+            if (staging / _JOURNAL).is_file():
+                with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
+                    _roll_forward(staging, folder)
+            shutil.rmtree(staging, ignore_errors=True)
+        finally:
+            os.close(fd)
+
+
+def prepare_output_folder(path: str | os.PathLike, field: str = "--out") -> Path:
+    """Create the output folder ``path`` if needed and check, before any model runs, that a run
+    can write there; complete or remove what runs killed earlier left (:func:`output_set`).
+
+    Writes no file inside the folder. Raises :class:`InputError` naming ``field`` otherwise.
+    """
+    p = Path(path)
+    try:
+        if p.exists() and not p.is_dir():
+            raise InputError(field, str(p), message=f"{field}: {p} is a file, not a folder")
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(
+            field, str(p), message=f"{field}: cannot create {p} ({exc.strerror})"
+        ) from None
+    if not os.access(p, os.W_OK | os.X_OK):
+        raise InputError(
+            field, str(p), message=f"{field}: cannot write in {p} (no write permission)"
+        )
+    folder = p.resolve()
+    base = _staging_base(folder)
+    try:
+        with _locked(folder):
+            _recover(folder, base)
+    except OSError as exc:
+        raise InputError(
+            field, str(p), message=f"{field}: cannot use {p} ({exc.strerror})"
+        ) from None
+    return p
+
+
+@contextlib.contextmanager
+def output_set(path: str | os.PathLike, field: str = "--out"):
+    """Stage the files of one run and commit them into the folder ``path`` as a whole.
+
+    Yields the staging folder, where the run writes its files (flat: regular files only). When
+    the block ends normally, the files are moved into ``path`` and the manifest
+    :data:`MANIFEST` names them; the files the previous run's manifest named and this run did
+    not write are removed; nothing else in ``path`` is touched. When the block raises
+    (an error, a failed solve, KeyboardInterrupt), nothing in ``path`` changes and the staging
+    folder is removed.
+
+    The commit point is the journal written into the staging folder: SIGINT and SIGTERM are
+    held from just before it to the end of the renames, so they leave the previous set or the new
+    one. A SIGKILL (which nothing can hold) in those few renames leaves the journal, and the next
+    :func:`prepare_output_folder` of the folder completes the commit first. The staging folder
+    lives beside ``path`` (``.rotarykiln-staging-*``), inside it only when its parent cannot be
+    written; one left by a SIGKILL is removed by the next run into ``path``.
+    """
+    p = prepare_output_folder(path, field)
+    folder = p.resolve()
+    base = _staging_base(folder)
+    staging: Path | None = None
+    lock: int | None = None
+    committing = False
+    try:
+        try:
+            with _locked(folder):
+                staging = Path(
+                    tempfile.mkdtemp(
+                        prefix=f"{_STAGING}{_folder_key(folder)}-{os.getpid()}-", dir=base
+                    )
+                )
+                lock = _try_lock(staging)  # held for the life of the run: a live staging folder
+                (staging / _FILES).mkdir()
+        except OSError as exc:
+            raise InputError(
+                field, str(p), message=f"{field}: cannot write beside or in {p} ({exc.strerror})"
+            ) from None
+        files = staging / _FILES
+        yield files
+        names = sorted(
+            q.name
+            for q in files.iterdir()
+            if q.is_file() and q.name[0] != "." and q.name != MANIFEST
+        )
+        with _locked(folder):
+            previous = _manifest_names(folder)
+            write_json_atomic(files / MANIFEST, {"files": names})
+            journal = {
+                "files": [*names, MANIFEST],
+                "remove": [n for n in previous if n not in names],
+            }
+            with _signals_deferred():
+                write_json_atomic(staging / _JOURNAL, journal)  # the commit point
+                committing = True
+                _roll_forward(staging, folder)
+                shutil.rmtree(staging, ignore_errors=True)
+                committing = False
+    finally:
+        if lock is not None:
+            os.close(lock)
+        if staging is not None and not committing:
+            # a commit cut by an error (not a signal: they are held) stays for the next run
+            shutil.rmtree(staging, ignore_errors=True)

@@ -8,12 +8,12 @@ temperatures overlaid on the computed profiles, and the HTML report of the run (
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.commands._args import out_dir
 from rotarykiln.commands.run import run_case
-from rotarykiln.outputs import write_text_atomic
+from rotarykiln.outputs import output_set, write_text_atomic
 from rotarykiln.report import format_table
 
 DEMO_CASE = "tscheng_A16"
@@ -34,9 +34,10 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     path = builtin_case_path(DEMO_CASE)
     case = load_case(path)
-    out = out_dir(args.out, "demo-output")
-    write_text_atomic(out / "case.yaml", path.read_text(encoding="utf-8"))
-    summary = run_case(case, out, report=True, source=DEMO_CASE)
+    out = Path(args.out or "demo-output")
+    with output_set(out) as staging:  # the whole set or nothing, like `rotarykiln run`
+        write_text_atomic(staging / "case.yaml", path.read_text(encoding="utf-8"))
+        summary = run_case(case, staging, report=True, source=DEMO_CASE, final=out)
     print(format_table(summary))
     print(f"\ndemo results written to {out}/ (open {out / 'report.html'} in a browser)")
     return 0

@@ -14,10 +14,20 @@ import warnings
 from pathlib import Path
 
 from rotarykiln.case import load_case
-from rotarykiln.commands._args import out_dir, print_json
+from rotarykiln.commands._args import print_json
 from rotarykiln.errors import InputError
-from rotarykiln.outputs import no_figures, save_figure_atomic, write_json_atomic, write_text_atomic
+from rotarykiln.outputs import (
+    MANIFEST,
+    no_figures,
+    output_set,
+    save_figure_atomic,
+    write_json_atomic,
+    write_text_atomic,
+)
 from rotarykiln.report import case_summary, format_table
+
+__all__ = ["MANIFEST", "RUNNERS", "case_path", "register", "run", "run_case", "run_case_into"]
+
 
 RUNNERS: dict[str, str] = {
     "transport": "rotarykiln.commands.bed:run_case_section",
@@ -58,12 +68,20 @@ def register(sub) -> None:
 
 
 def run_case(
-    case, out: Path, *, plots: bool = True, report: bool = False, source: str | None = None
+    case,
+    out: Path,
+    *,
+    plots: bool = True,
+    report: bool = False,
+    source: str | None = None,
+    final: Path | None = None,
 ) -> dict:
     """Run every model a validated case asks for; write summary and figures to ``out``.
 
     With ``report``, also write ``out/report.html`` (:mod:`rotarykiln.report_html`): the
     warnings of the run are recorded for it (and still shown as usual), ``source`` names the case.
+    ``final``: the folder the files will be moved to when ``out`` is a staging folder
+    (:func:`rotarykiln.outputs.output_set`); paths in the summary name it, not ``out``.
     """
     before = _stamps(out) if report else {}
     recorder = warnings.catch_warnings(record=True) if report else contextlib.nullcontext([])
@@ -74,7 +92,8 @@ def run_case(
         for section, target in RUNNERS.items():
             if wants(case, section):
                 module, func = target.split(":")
-                sections[section] = getattr(importlib.import_module(module), func)(case, out) or {}
+                result = getattr(importlib.import_module(module), func)(case, out) or {}
+                sections[section] = _relocate(result, out, final)
                 summary.update(sections[section])
         write_json_atomic(out / "summary.json", summary)
         write_text_atomic(out / "summary.txt", format_table(summary) + "\n")
@@ -137,36 +156,34 @@ def case_path(spec: str) -> Path:
     )
 
 
-MANIFEST = "run_files.json"  # the files of the last run in this folder
+def _relocate(data, staging: Path, final: Path | None):
+    """``data`` with the paths into ``staging`` (strings) made paths into ``final``."""
+    if final is None:
+        return data
+    if isinstance(data, dict):
+        return {k: _relocate(v, staging, final) for k, v in data.items()}
+    if isinstance(data, list | tuple):
+        return type(data)(_relocate(v, staging, final) for v in data)
+    if isinstance(data, str) and data.startswith(str(staging)):
+        return str(final) + data[len(str(staging)) :]
+    return data
 
 
-def _previous_outputs(out: Path) -> list[str]:
-    """Files an earlier ``run`` wrote into ``out`` (its manifest), [] if none or unreadable."""
-    import json
-
-    try:
-        names = json.loads((out / MANIFEST).read_text()).get("files", [])
-    except (OSError, ValueError, AttributeError):
-        return []
-    return [n for n in names if isinstance(n, str) and "/" not in n and not n.startswith(".")]
-
-
-def _replace_outputs(out: Path, before: dict, previous: list[str]) -> None:
-    """Record what this run wrote and remove what an earlier run left that this one did not
-    rewrite (only files named in the earlier run's manifest: nothing else is touched)."""
-    written = sorted(p.name for p, t in _stamps(out).items() if before.get(p) != t)
-    for name in previous:
-        if name not in written:
-            (out / name).unlink(missing_ok=True)
-    write_json_atomic(out / MANIFEST, {"files": written})
+def run_case_into(case, folder: str | Path, **kwargs) -> dict:
+    """:func:`run_case` with its files committed into ``folder`` as a whole, or not at all
+    (:func:`rotarykiln.outputs.output_set`): the previous run's files there are replaced, the
+    user's own files are kept, a failed or interrupted run changes nothing."""
+    folder = Path(folder)
+    with output_set(folder) as staging:
+        return run_case(case, staging, final=folder, **kwargs)
 
 
 def run(args: argparse.Namespace) -> int:
     case = load_case(case_path(args.case))
-    out = out_dir(args.out, f"{Path(args.case).stem}-results")
-    previous, before = _previous_outputs(out), _stamps(out)
-    summary = run_case(case, out, plots=not args.no_plots, report=args.report, source=args.case)
-    _replace_outputs(out, before, previous)
+    out = Path(args.out or f"{Path(args.case).stem}-results")
+    summary = run_case_into(
+        case, out, plots=not args.no_plots, report=args.report, source=args.case
+    )
     if args.json:
         print_json(summary)
     else:
