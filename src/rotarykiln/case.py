@@ -496,32 +496,41 @@ def _reworded(exc: InputError) -> str:
     return f"{exc.field}: {_show(value) if isinstance(value, str) else _short(value)} is not {accepted}"
 
 
+def _user_species(info):
+    """The species table of the case's ``chemistry.species`` (set by :func:`parse_case` in the
+    validation context), or None for the built-in table."""
+    context = getattr(info, "context", None)
+    return context.get("species") if isinstance(context, dict) else None
+
+
 def _composition(phase: str):
-    def check(v: Any) -> dict[str, float]:
+    def check(v: Any, info) -> dict[str, float]:
         from rotarykiln.chemistry.species import check_mass_fractions
 
         try:
-            return check_mass_fractions("composition", v, phase=phase)
+            return check_mass_fractions("composition", v, _user_species(info), phase=phase)
         except InputError as exc:
             raise PydanticCustomError("number", "{msg}", {"msg": _reworded(exc)}) from None
 
     return Annotated[dict[str, float], BeforeValidator(check)]
 
 
-def _reaction_names(v: Any) -> list:
-    """Built-in reaction names or user reactions (mappings, validated as reaction YAML)."""
+def _reaction_names(v: Any, info) -> list:
+    """Built-in reaction names or user reactions (mappings, validated as reaction YAML, on the
+    case's own species when it has ``chemistry.species``)."""
     from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
 
     if not isinstance(v, list) or not v or not all(isinstance(x, str | dict) for x in v):
         raise PydanticCustomError(
             "number", "{value} is not a list of reaction names or reactions", {"value": v}
         )
-    known = builtin_reactions()
+    species = _user_species(info)
+    known = builtin_reactions(species)
     seen = set()
     for i, item in enumerate(v):
         if isinstance(item, dict):
             try:
-                name = reaction_from_dict(item, where=f"[{i}]").name
+                name = reaction_from_dict(item, species, where=f"[{i}]").name
             except InputError as exc:
                 raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
         else:
@@ -606,8 +615,11 @@ class Chemistry(Section):
     ``kirchhoff``: heats of reaction follow Kirchhoff's law with the species' c_p;
     ``peclet``: the bed Peclet number of the residence-time effects (default: the ``rtd:``
     section or the Sherritt correlation); ``expected``: the source's printed results (shown
-    beside the solution, never used by the solve)."""
+    beside the solution, never used by the solve); ``species``: user species added to the
+    built-in ones (:func:`rotarykiln.chemistry.species.load_species`), a YAML file (relative to
+    the case file) or the same mapping inline (``bed:``, ``gas:``)."""
 
+    species: str | dict[str, Any] | None = None
     reactions: Annotated[list, BeforeValidator(_reaction_names)]
     kirchhoff: bool = False
     onset_width: Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))] = 0.0
@@ -905,6 +917,32 @@ def _error_rank(err: dict) -> int:
     return 2 if err["type"] in _ACCEPTED else 1
 
 
+def _load_user_species(data: dict, source: str):
+    """The case's user species (``chemistry.species``: a file, relative to the case file, or a
+    mapping), loaded once: the data with the file's absolute path, and the species table (None
+    without user species). A bad species: :class:`InputError` naming ``chemistry.species``."""
+    chem = data.get("chemistry")
+    if not isinstance(chem, dict) or chem.get("species") is None:
+        return data, None
+    from rotarykiln.chemistry.species import load_species
+
+    spec = chem["species"]
+    if isinstance(spec, str):
+        path = Path(spec)
+        if not path.is_absolute() and Path(source).is_file():
+            path = Path(source).resolve().parent / path
+        if not path.is_file():
+            raise InputError("chemistry.species", spec, "a YAML file of species (bed:, gas:)")
+        spec = str(path)
+    elif not isinstance(spec, dict):
+        raise InputError("chemistry.species", spec, "a YAML file or a mapping of species")
+    try:
+        species = load_species(spec)
+    except InputError as exc:
+        raise InputError("chemistry.species", message=f"chemistry.{exc}") from None
+    return {**data, "chemistry": {**chem, "species": spec}}, species
+
+
 def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case) -> Case:
     """Validate a mapping (parsed YAML) into a :class:`Case`.
 
@@ -922,8 +960,9 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
             source, message=f"{source}: expected a mapping of sections, got {_short(data)}"
         )
     _check_structure(data, source)
+    data, species = _load_user_species(data, source)
     try:
-        return model.model_validate(data)
+        return model.model_validate(data, context={"species": species})
     except ValidationError as exc:
         # a misspelt key also makes the real key "missing": report the misspelling first; a
         # union's members each report an error at one place: count the place once

@@ -117,3 +117,18 @@ def test_jacket_gas_balance_closes(plug):
     assert jb["duty_W"] == pytest.approx(sol.energy_sheet["electric_heating_W"], rel=1e-9)
     # the anchor's flue-gas duty: 9.11 kW in plug flow (its wall is the flue gas, as here)
     assert jb["duty_W"] == pytest.approx(9110.0, rel=0.05)
+
+
+def test_builtin_case_file():
+    """cases/rotary_pyrolysis.yaml: the jacket as heater zones at its wall temperature and the
+    Saeman fill profile (the case schema has no jacket): the same targets in plug flow."""
+    from rotarykiln.case import load_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.kiln.build import kiln_from_case
+
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("rotary_pyrolysis")))
+    sol = solve_kiln(kiln, cells)
+    assert abs(sol.energy_closure) < 1e-6
+    assert 100 * char_yield(sol) == pytest.approx(20.72, abs=2.0)
+    assert sol.t_bed_nodes[-1] == pytest.approx(684.79, abs=20.0)
+    assert _bed_deviation(sol, PLUG).max() < 30.0

@@ -344,13 +344,14 @@ def burner_from_case(section) -> Burner:
 
 def mechanism_from_case(chem):
     """The :class:`~rotarykiln.chemistry.Mechanism` of a ``chemistry`` section (built-in
-    names or user mappings); reactions with a sharp onset temperature (``width`` 0) get
-    ``chemistry.onset_width``."""
+    names or user mappings, on the built-in species and the section's own ``species``);
+    reactions with a sharp onset temperature (``width`` 0) get ``chemistry.onset_width``."""
     from rotarykiln.chemistry.mechanism import Mechanism
     from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
-    from rotarykiln.chemistry.species import default_species
+    from rotarykiln.chemistry.species import default_species, load_species
 
-    sp = default_species()
+    # the built-in species, with the case's own (chemistry.species) when it has some
+    sp = default_species() if chem.species is None else load_species(chem.species)
     known = builtin_reactions(sp)
     chosen = []
     for i, item in enumerate(chem.reactions):
