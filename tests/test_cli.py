@@ -23,6 +23,7 @@ def test_regime_check_point(capsys):
     assert round(data["fraction_of_critical"], 2) == 0.29
     assert data["regime"] == "cascading" and data["criterion"].startswith("mellmann")
     assert data["regime_by_henein"] == "rolling"
+    assert data["regime_note"].startswith("the criteria disagree: mellmann's applies")
 
 
 def test_regime_text_and_plot(capsys, tmp_path):

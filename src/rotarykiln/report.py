@@ -43,6 +43,12 @@ def regime_summary(
         repose_angle=repose_angle,
     )
     alt = classify_regime(fr, fill, criterion=other)
+    note = (
+        "both criteria agree"
+        if str(main.name) == str(alt.name)
+        else f"the criteria disagree: {criterion}'s applies ({_WHY[criterion]}); "
+        f"{other}'s gives {alt.name} ({_WHY[other]})"
+    )
     return {
         "radius_m": radius,
         "speed_rpm": speed / RPM,
@@ -55,7 +61,17 @@ def regime_summary(
         "criterion": f"{criterion}: {main.source}",
         "regime_by_" + other: str(alt.name),
         "criterion_" + other: alt.source,
+        "regime_note": note,
     }
+
+
+# why each regime criterion applies, as the note beside a disagreement says it
+_WHY = {
+    "mellmann": "Mellmann 2001: Froude number, fill and wall friction bands for any free-flowing "
+    "material, the one this model uses",
+    "henein": "Henein et al. 1983: a bed-behaviour diagram measured for sand and limestone in "
+    "pilot drums, shown for comparison",
+}
 
 
 def case_summary(case) -> dict[str, Any]:
@@ -78,7 +94,7 @@ def case_summary(case) -> dict[str, Any]:
         cs = CrossSection.from_fill(fill, radius)
         out.update({k: float(v) for k, v in cs.as_dict().items() if k != "radius_m"})
         reg = regime_summary(radius, case.operation.speed, fill)
-        out.update({k: reg[k] for k in ("regime", "criterion", "regime_by_henein")})
+        out.update({k: reg[k] for k in ("regime", "criterion", "regime_by_henein", "regime_note")})
     return out
 
 

@@ -156,6 +156,7 @@ _REGIME = (
     "regime",
     "criterion",
     "regime_by_henein",
+    "regime_note",
 )
 _REGIME_FIGURES = ("regime_map", "cross_section")
 _RTD_FIGURES = ("kiln_rtd", "rtd")
@@ -191,6 +192,9 @@ def _energy_sheet(kiln: Mapping[str, Any]) -> dict | None:
         "total_out": _term("total out", sum(v for _, v in outs), "W"),
         "closure": _term("closure (in - out)", float(get["closure_W"]), "W"),
         "efficiency": kiln.get("kiln_thermal_efficiency"),
+        "supplied": "fuel LHV and electric heating"
+        if get.get("fuel_lhv_input_W")
+        else "heat given up by the gas and electric heating",
     }
 
 
@@ -211,7 +215,8 @@ def _residence(sections: Mapping[str, Mapping[str, Any]]) -> list[dict]:
         for key, value in table.items():
             if any(w in key for w in ("residence", "peclet", "segregated", "plug_flow")):
                 name, unit = split_unit(key)
-                out.append(_term(f"{name} ({sec})", value, unit))
+                shown = name if name.startswith(sec) else f"{name} ({sec})"
+                out.append(_term(shown, value, unit))
     return out
 
 
