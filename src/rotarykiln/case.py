@@ -52,6 +52,7 @@ __all__ = [
     "BurnerAir",
     "Closures",
     "Gas",
+    "Jacket",
     "Measurements",
     "Solver",
     "Wall",
@@ -574,15 +575,52 @@ class Gas(Section):
         return self
 
 
+class Jacket(Section):
+    """A heating jacket around the drum (indirectly heated kilns, kiln/jacket.py): a gas of
+    mass ``flow`` entering at ``temperature``, flowing with the solids (``counter_current:
+    false``, entering at the feed end) or against them; its ``specific_heat`` (constant) or
+    ``composition`` (mole fractions, enthalpy from the gas tables). ``heat_transfer``: the
+    jacket gas to drum coefficient (a value, W/(m2 K)), ``annulus`` (forced convection in the
+    annular ``gap`` with gas and casing radiation, Gnielinski / Shah-London, through a drum wall
+    of ``wall_thickness`` and ``wall_conductivity``) or ``wall_at_gas`` (no resistance: the
+    rotaryPyrolysis assumption). ``casing_u``: loss of the jacket casing to ambient, W/(m2 K)
+    on ``casing_perimeter`` (default the drum's)."""
+
+    flow: MassFlow
+    temperature: Temperature
+    specific_heat: SpecificHeat | None = None
+    composition: Annotated[str, BeforeValidator(_fuel_composition)] | None = None
+    counter_current: bool = False
+    heat_transfer: Literal["annulus", "wall_at_gas"] | HeatTransferCoefficient = "annulus"
+    gap: Length = 0.05
+    wall_thickness: Position = 0.005
+    wall_conductivity: ThermalConductivity = 45.0
+    casing_u: HeatTransferCoefficient = 0.0
+    casing_perimeter: Length | None = None
+    radiation: bool = True
+    drum_emissivity: Fraction = 0.8
+    casing_emissivity: Fraction = 0.8
+
+    @model_validator(mode="after")
+    def _one_property(self):
+        if (self.specific_heat is None) == (self.composition is None):
+            raise PydanticCustomError(
+                "number", "give specific_heat or composition (the jacket gas), one of them", {}
+            )
+        return self
+
+
 class Wall(Section):
     """The kiln wall: ``lining`` layers (inner to outer, the shell included) with the shell's
-    loss by convection (``wind_speed``) and radiation to ``ambient_temperature``, or a constant
-    loss coefficient ``U`` (W/(m2 K), referred to the inner wall: q = U pi D (T_wall - T_amb)).
-    ``emissivity``: inner wall surface (default: the first layer's); ``shell_emissivity``;
-    ``heaters``: electric heater zones on the shell."""
+    loss by convection (``wind_speed``) and radiation to ``ambient_temperature``, a constant
+    loss coefficient ``U`` (W/(m2 K), referred to the inner wall: q = U pi D (T_wall - T_amb)),
+    or a heating ``jacket`` (its own gas stream and energy balance). ``emissivity``: inner wall
+    surface (default: the first layer's); ``shell_emissivity``; ``heaters``: electric heater
+    zones on the shell (with a lining)."""
 
     lining: list[LiningLayer] | None = None
     U: HeatTransferCoefficient | None = None
+    jacket: Jacket | None = None
     ambient_temperature: Temperature = 298.15
     wind_speed: Velocity = 0.0
     emissivity: Fraction | None = None
@@ -591,11 +629,16 @@ class Wall(Section):
 
     @model_validator(mode="after")
     def _lining_or_u(self):
-        if (self.lining is None) == (self.U is None):
+        if sum(x is not None for x in (self.lining, self.U, self.jacket)) != 1:
             raise PydanticCustomError(
                 "number",
-                "give lining (layers) or U (a constant loss coefficient, W/(m2 K)), one of them",
+                "give lining (layers), U (a constant loss coefficient, W/(m2 K)) or jacket, "
+                "one of them",
                 {},
+            )
+        if self.jacket is not None and self.heaters:
+            raise PydanticCustomError(
+                "number", "heaters need a lining; a jacketed wall takes none", {}
             )
         return self
 
@@ -731,8 +774,8 @@ class Case(Section):
     @property
     def has_kiln_model(self) -> bool:
         """Whether the case asks for the kiln model: a heat source (``gas``, ``burner``, heater
-        zones on the ``wall``) or a ``chemistry`` section."""
-        heated = self.wall is not None and bool(self.wall.heaters)
+        zones or a jacket on the ``wall``) or a ``chemistry`` section."""
+        heated = self.wall is not None and (bool(self.wall.heaters) or self.wall.jacket is not None)
         return heated or any(s is not None for s in (self.gas, self.burner, self.chemistry))
 
 

@@ -111,7 +111,7 @@ def test_fired_kiln_is_picklable():
 def test_wall_needs_lining_or_u_and_gas_or_burner():
     data = _data("tscheng_A16")
     data["wall"]["U"] = "5 W/m2/K"
-    with pytest.raises(InputError, match="wall: give lining .* or U"):
+    with pytest.raises(InputError, match="wall: give lining .* or jacket, one of them"):
         parse_case(data)
     data = _data("tscheng_A16")
     del data["wall"]
@@ -136,3 +136,38 @@ def test_gas_by_mass_or_mole_fractions_builds_the_same_kiln():
     assert a.gas_in.keys() == b.gas_in.keys()
     for k in a.gas_in:
         assert b.gas_in[k] == pytest.approx(a.gas_in[k], rel=1e-9)
+
+
+JACKET = {"flow": "175 kg/h", "temperature": "833 K", "specific_heat": "1227 J/kg/K"}
+
+
+@pytest.mark.parametrize(
+    "wall, message",
+    [
+        ({"jacket": JACKET, "U": "5 W/m2/K"}, "lining .*, U .* or jacket, one of them"),
+        ({"jacket": {**JACKET, "composition": "N2:1"}}, "specific_heat or composition"),
+        ({"jacket": {k: v for k, v in JACKET.items() if k != "specific_heat"}}, "one of them"),
+        ({"jacket": {**JACKET, "heat_transfer": "magic"}}, "wall.jacket.heat_transfer"),
+        (
+            {"jacket": JACKET, "heaters": [{"start": "0 m", "end": "1 m", "power": "1 kW"}]},
+            "heaters need a lining",
+        ),
+    ],
+)
+def test_bad_jackets_are_refused(wall, message):
+    data = _data("rotary_pyrolysis")
+    data["wall"] = wall
+    with pytest.raises(InputError, match=message):
+        parse_case(data)
+
+
+def test_counter_current_jacket_from_a_case_closes():
+    from rotarykiln.kiln.jacket import jacket_balance
+
+    data = _data("rotary_pyrolysis")
+    data["wall"]["jacket"].update(counter_current=True, heat_transfer="annulus", gap="50 mm")
+    data["solver"] = {"cells": 40}
+    kiln, cells = kiln_from_case(parse_case(data))
+    sol = solve_kiln(kiln, cells)
+    assert abs(sol.energy_closure) < 1e-6
+    assert abs(jacket_balance(kiln, sol)["closure_relative"]) < 1e-6

@@ -120,15 +120,17 @@ def test_jacket_gas_balance_closes(plug):
 
 
 def test_builtin_case_file():
-    """cases/rotary_pyrolysis.yaml: the jacket as heater zones at its wall temperature and the
-    Saeman fill profile (the case schema has no jacket): the same targets in plug flow."""
+    """cases/rotary_pyrolysis.yaml: the flue-gas jacket given in the case file (wall.jacket)
+    and the Saeman fill profile: the same targets in plug flow, the jacket balance closed."""
     from rotarykiln.case import load_case
     from rotarykiln.cases import builtin_case_path
     from rotarykiln.kiln.build import kiln_from_case
 
     kiln, cells = kiln_from_case(load_case(builtin_case_path("rotary_pyrolysis")))
+    assert kiln.jacket is not None and kiln.jacket.htc == "wall_at_gas"
     sol = solve_kiln(kiln, cells)
     assert abs(sol.energy_closure) < 1e-6
+    assert abs(jacket_balance(kiln, sol)["closure_relative"]) < 1e-6
     assert 100 * char_yield(sol) == pytest.approx(20.72, abs=2.0)
     assert sol.t_bed_nodes[-1] == pytest.approx(684.79, abs=20.0)
     assert _bed_deviation(sol, PLUG).max() < 30.0

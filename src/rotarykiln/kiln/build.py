@@ -14,7 +14,8 @@ model as follows:
   profile follows the mass the bed loses);
 - ``gas`` (a hot-gas or sweep-gas inlet) or ``burner`` (fuel and air, burnt by
   :func:`rotarykiln.kiln.flame.fire`);
-- ``wall`` (lining layers or a constant U, heater zones), ``closures``, ``measurements``,
+- ``wall`` (lining layers, a constant U or a heating jacket; heater zones), ``closures``,
+  ``measurements``,
   ``solver`` (cells), ``chemistry`` (reactions).
 """
 
@@ -30,7 +31,7 @@ from rotarykiln.kiln.flame import AirStream, Burner, fire
 from rotarykiln.kiln.model import Closures, Kiln
 from rotarykiln.kiln.wall import HeaterZone, layers_from_case
 
-__all__ = ["burner_from_case", "kiln_from_case", "mechanism_from_case"]
+__all__ = ["burner_from_case", "jacket_from_case", "kiln_from_case", "mechanism_from_case"]
 
 AIR = "O2:0.2095, N2:0.7808, AR:0.0097"
 """Default composition of an inlet gas (mole fractions): dry air."""
@@ -62,8 +63,12 @@ def kiln_from_case(case) -> tuple[Kiln, int]:
         kiln = _inert_kiln(case, gas, wall)
     else:
         kiln = _reacting_kiln(case, gas, wall)
-    dispersion = _bed_dispersion(case, kiln)
-    return dataclasses.replace(kiln, bed_dispersion=dispersion), int(case.solver.cells)
+    kiln = dataclasses.replace(kiln, bed_dispersion=_bed_dispersion(case, kiln))
+    if case.wall.jacket is not None:
+        from rotarykiln.kiln.jacket import with_jacket
+
+        kiln = with_jacket(kiln, jacket_from_case(case.wall.jacket))
+    return kiln, int(case.solver.cells)
 
 
 def _common(case, wall: dict) -> dict:
@@ -305,6 +310,8 @@ def _wall(case) -> dict:
     """Wall inputs of :class:`Kiln`: lining layers with the shell loss, or a constant U."""
     w = case.wall
     out = {"ambient_temperature": w.ambient_temperature}
+    if w.jacket is not None:  # the jacket is the wall model (kiln/jacket.py)
+        return out
     if w.lining is None:
         out["wall_loss_u"] = w.U
         return out
@@ -314,6 +321,37 @@ def _wall(case) -> dict:
         shell_emissivity=w.shell_emissivity,
     )
     return out
+
+
+def jacket_from_case(section):
+    """The :class:`~rotarykiln.kiln.jacket.Jacket` of a case file's ``wall.jacket`` section.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import Jacket as JacketSection
+    >>> j = jacket_from_case(JacketSection(flow="175 kg/h", temperature="560 degC",
+    ...                                    specific_heat="1226.9 J/kg/K"))
+    >>> round(j.mass_flow * 3600, 6), j.htc, j.counter_current
+    (175.0, 'annulus', False)
+    """
+    from rotarykiln.kiln.jacket import Jacket
+
+    return Jacket(
+        section.flow,
+        section.temperature,
+        cp=section.specific_heat,
+        composition=section.composition,
+        counter_current=section.counter_current,
+        htc=section.heat_transfer,
+        gap=section.gap,
+        wall_thickness=section.wall_thickness,
+        wall_conductivity=section.wall_conductivity,
+        casing_u=section.casing_u,
+        casing_perimeter=section.casing_perimeter,
+        radiation=section.radiation,
+        eps_drum=section.drum_emissivity,
+        eps_casing=section.casing_emissivity,
+    )
 
 
 def burner_from_case(section) -> Burner:
