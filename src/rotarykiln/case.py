@@ -708,6 +708,8 @@ class Bed(Section):
 
     @model_validator(mode="after")
     def _fill_or_time(self):
+        if isinstance(self.fill, list) and not self.fill:
+            raise PydanticCustomError("number", "fill: [] is not a fill (a number or a list)", {})
         if self.fill is not None and self.residence_time is not None:
             raise PydanticCustomError(
                 "number", "give fill or residence_time, not both (one sets the other)", {}

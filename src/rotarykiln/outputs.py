@@ -45,8 +45,15 @@ __all__ = [
 def atomic_path(path: str | os.PathLike, writer: Callable[[Path], None]) -> Path:
     """Call ``writer(tmp_path)`` then move ``tmp_path`` onto ``path`` atomically."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent)
+    if os.path.isdir(path):  # (False, not an error, for a name too long)
+        raise InputError(str(path), message=f"{path}: is a folder, expected a file name")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent)
+    except OSError as exc:  # a user's path that cannot be written: one line, not a traceback
+        raise InputError(
+            str(path), message=f"{path}: cannot write there ({exc.strerror or exc})"
+        ) from None
     os.close(fd)
     try:
         writer(Path(tmp))

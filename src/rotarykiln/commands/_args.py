@@ -9,7 +9,16 @@ from rotarykiln.errors import InputError
 from rotarykiln.outputs import to_json
 from rotarykiln.units import to_si
 
-__all__ = ["add_quantity", "get_quantity", "print_json", "out_dir", "plain"]
+__all__ = [
+    "add_quantity",
+    "check_count",
+    "check_out",
+    "get_quantity",
+    "out_dir",
+    "plain",
+    "print_json",
+    "to_si_within",
+]
 
 
 def add_quantity(parser: argparse.ArgumentParser, name: str, help: str, **kwargs) -> None:
@@ -18,15 +27,41 @@ def add_quantity(parser: argparse.ArgumentParser, name: str, help: str, **kwargs
     parser.add_argument(f"--{name}", nargs="+", metavar=("VALUE", "UNIT"), help=help, **kwargs)
 
 
-def get_quantity(args: argparse.Namespace, name: str, kind: str, *, required: bool = False):
-    """The SI value of quantity option ``--name`` (``None`` when absent and not required)."""
+def get_quantity(
+    args: argparse.Namespace, name: str, kind: str, *, required: bool = False, within=None
+):
+    """The SI value of quantity option ``--name`` (``None`` when absent and not required).
+
+    ``within``: a quantity type of :mod:`rotarykiln.case` (``Length``, ``RotationRate``...):
+    the value must also lie in its physical range, the same as in a case file.
+    """
     tokens = getattr(args, name.replace("-", "_"))
     if tokens is None:
         if required:
             raise InputError(f"--{name}", message=f"--{name}: missing (required)")
         return None
     text = " ".join(tokens) if isinstance(tokens, list) else str(tokens)
-    return to_si(f"--{name}", text, kind)
+    if within is None:
+        return to_si(f"--{name}", text, kind)
+    return to_si_within(f"--{name}", text, within)
+
+
+def to_si_within(field: str, text: str, within) -> float:
+    """``text`` (a number and a unit) as an SI float in the range of the case-file type
+    ``within`` (e.g. :data:`rotarykiln.case.Length`); an InputError naming ``field`` otherwise."""
+    from pydantic import TypeAdapter, ValidationError
+
+    try:
+        return float(TypeAdapter(within).validate_python(text))
+    except ValidationError as exc:
+        raise InputError(field, message=f"{field}: {exc.errors()[0]['msg']}") from None
+
+
+def check_count(option: str, value, low: int, high: int, what: str = "a whole number"):
+    """``value`` of an integer option (None passes) in [low, high], else a one-line InputError."""
+    if value is not None and not low <= value <= high:
+        raise InputError(option, message=f"{option}: {value} is not {what} in [{low}, {high}]")
+    return value
 
 
 def print_json(data) -> None:
@@ -55,6 +90,35 @@ def out_dir(path: str | None, default: str) -> Path:
             "--out", str(p), message=f"--out: cannot write in {p} ({exc.strerror})"
         ) from None
     return p
+
+
+def check_out(path: str | None) -> None:
+    """Check, before a long computation and without creating anything, that the folder ``path``
+    could be created and written (:func:`out_dir` creates it once there is something to write)."""
+    import os
+
+    if path is None:
+        return
+    p = Path(path).absolute()
+    try:
+        os.stat(p)  # a name too long or a file in the way: refused here
+    except FileNotFoundError:
+        pass
+    except OSError as exc:
+        raise InputError(
+            "--out", str(path), message=f"--out: cannot use {path} ({exc.strerror})"
+        ) from None
+    ancestor = p
+    while not os.path.lexists(ancestor):
+        ancestor = ancestor.parent
+    if ancestor == p and not p.is_dir():
+        raise InputError("--out", str(path), message=f"--out: {path} is a file, not a folder")
+    if not ancestor.is_dir():
+        raise InputError(
+            "--out", str(path), message=f"--out: cannot create {path} ({ancestor} is a file)"
+        )
+    if not os.access(ancestor, os.W_OK | os.X_OK):
+        raise InputError("--out", str(path), message=f"--out: cannot write in {ancestor}")
 
 
 def plain(doc: str) -> str:

@@ -10,12 +10,18 @@ from __future__ import annotations
 
 import argparse
 
-from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, plain, print_json
+from rotarykiln.commands._args import (
+    add_quantity,
+    get_quantity,
+    out_dir,
+    plain,
+    print_json,
+    to_si_within,
+)
 from rotarykiln.errors import InputError
 from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 from rotarykiln.report import format_table
 from rotarykiln.transport.solve import N_POINTS_RANGE, solve_bed
-from rotarykiln.units import to_si
 
 __all__ = ["register", "run", "run_case_section"]
 
@@ -91,25 +97,32 @@ def run(args: argparse.Namespace) -> int:
     low, high = N_POINTS_RANGE
     if not low <= args.points <= high:
         raise InputError("--points", args.points, f"an integer in [{low}, {high}]")
+    from rotarykiln import case as c  # the physical ranges of a case file
+
     q = {
-        name: get_quantity(args, name, kind, required=True)
-        for name, kind in (
-            ("diameter", "length"),
-            ("length", "length"),
-            ("speed", "rotation rate"),
-            ("slope", "angle"),
-            ("feed", "mass flow"),
-            ("density", "density"),
-            ("repose", "angle"),
+        name: get_quantity(args, name, kind, required=True, within=within)
+        for name, kind, within in (
+            ("diameter", "length", c.Length),
+            ("length", "length", c.Length),
+            ("speed", "rotation rate", c.RotationRate),
+            ("slope", "angle", c.Slope),
+            ("feed", "mass flow", c.MassFlow),
+            ("density", "density", c.Density),
+            ("repose", "angle", c.ReposeAngle),
         )
     }
+    if not q["feed"] >= 1e-6:  # a drum that is fed: below 3.6 g/h the hold-up underflows
+        raise InputError(
+            "--feed", message=f"--feed: {' '.join(args.feed)} is not in [1e-6 kg/s, 1e5 kg/s]"
+        )
     weirs = [
-        (to_si("--weir", pos, "length"), to_si("--weir", h, "length")) for pos, h in args.weir or []
+        (to_si_within("--weir", pos, c.Position), to_si_within("--weir", h, c.Length))
+        for pos, h in args.weir or []
     ]
     profile = solve_bed(
         model=args.model,
-        static_repose=get_quantity(args, "static-repose", "angle"),
-        dam=get_quantity(args, "dam", "length"),
+        static_repose=get_quantity(args, "static-repose", "angle", within=c.ReposeAngle),
+        dam=get_quantity(args, "dam", "length", within=c.Position),
         weirs=weirs,
         friction=_friction(args.friction),
         n_points=args.points,

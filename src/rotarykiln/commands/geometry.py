@@ -29,24 +29,29 @@ def register(sub) -> None:
 
 
 def radius_from_args(args: argparse.Namespace) -> float:
+    from rotarykiln.case import Length  # the physical range of a case file
+
     d = get_quantity(args, "diameter", "length")
     r = get_quantity(args, "radius", "length")
     if (d is None) == (r is None):
         raise InputError("--diameter", message="--diameter/--radius: give exactly one of them")
     radius = r if r is not None else d / 2
+    name = "radius" if r is not None else "diameter"
     if radius <= 0:
-        name = "--radius" if r is not None else "--diameter"
-        raise InputError(name, message=f"{name}: {' '.join(getattr(args, name[2:]))} is not > 0")
+        raise InputError(name, message=f"--{name}: {' '.join(getattr(args, name))} is not > 0")
+    get_quantity(args, name, "length", within=Length)  # and in its physical range
     return radius
 
 
 def run(args: argparse.Namespace) -> int:
+    from rotarykiln.case import Length
+
     radius = radius_from_args(args)
     given = {
         "fill": get_quantity(args, "fill", "fraction"),
-        "depth": get_quantity(args, "depth", "length"),
+        "depth": get_quantity(args, "depth", "length", within=Length),
         "half-angle": get_quantity(args, "half-angle", "angle"),
-        "chord": get_quantity(args, "chord", "length"),
+        "chord": get_quantity(args, "chord", "length", within=Length),
     }
     present = [k for k, v in given.items() if v is not None]
     if len(present) != 1:

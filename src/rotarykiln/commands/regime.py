@@ -43,10 +43,13 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(
             "--speed", message=f"--speed: {' '.join(args.speed)} is not > 0 (a drum that turns)"
         )
+    from rotarykiln.case import Length, ReposeAngle, RotationRate
+
+    get_quantity(args, "speed", "rotation rate", within=RotationRate)  # its physical range
     fill = get_quantity(args, "fill", "fraction")
-    depth = get_quantity(args, "depth", "length")
-    if fill is None and depth is None:
-        raise InputError("--fill", message="--fill/--depth: give one of them")
+    depth = get_quantity(args, "depth", "length", within=Length)
+    if (fill is None) == (depth is None):
+        raise InputError("--fill", message="--fill/--depth: give exactly one of them")
     if fill is None:
         if not 0 < depth < 2 * radius:
             raise InputError(
@@ -55,13 +58,18 @@ def run(args: argparse.Namespace) -> int:
         fill = float(fill_from_depth(depth, radius))
     if not 0 < fill < 1:
         raise InputError("--fill", message=f"--fill: {' '.join(args.fill)} is not in (0, 1)")
-    repose = get_quantity(args, "repose", "angle")
+    repose = get_quantity(args, "repose", "angle", within=ReposeAngle)
+    wall_friction = args.wall_friction
+    if wall_friction is not None and not 0 <= wall_friction <= 10:
+        raise InputError(
+            "--wall-friction", message=f"--wall-friction: {wall_friction} is not in [0, 10]"
+        )
     summary = regime_summary(
         radius,
         speed,
         fill,
         criterion=args.criterion,
-        wall_friction=args.wall_friction,
+        wall_friction=wall_friction,
         repose_angle=repose,
     )
     if args.plot:

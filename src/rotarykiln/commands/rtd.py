@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from rotarykiln.commands._args import add_quantity, get_quantity, out_dir, print_json
+from rotarykiln.commands._args import add_quantity, check_out, get_quantity, out_dir, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.report import format_table
 
@@ -86,11 +86,19 @@ def _fit_figure(fit):
 
 
 def run_fit(args: argparse.Namespace) -> int:
+    from rotarykiln.case import Length
     from rotarykiln.rtd.fitting import fit_tracer
     from rotarykiln.rtd.tracer import analyse_tracer, read_tracer_csv
 
+    if args.time_unit is not None:  # checked even when the header gives the unit
+        from rotarykiln.units import to_si
+
+        if not args.time_unit.strip() or args.time_unit.strip()[0].isdigit():
+            raise InputError("--time-unit", args.time_unit, "a unit of time (s, min, h)")
+        to_si("--time-unit", f"1 {args.time_unit}", "time")
+    length = get_quantity(args, "length", "length", within=Length)
+    check_out(args.out)  # writable, before the fit; created only if there is a result
     t, signal, name = read_tracer_csv(args.data, time_unit=args.time_unit)
-    length = get_quantity(args, "length", "length")
     tracer = analyse_tracer(t, signal, kind=args.kind, baseline=_baseline(args.baseline))
     fit = fit_tracer(tracer, model=args.model, length=length)
     summary = {"data": str(args.data), "signal": name, "samples": int(t.size)}
@@ -118,6 +126,7 @@ def run_predict(args: argparse.Namespace) -> int:
     from rotarykiln.rtd.predict import predict_from_case
 
     case = load_case(case_path(args.case))
+    check_out(args.out)
     pred = predict_from_case(case)
     summary = {"case": case.name, **pred.summary()}
     if args.out:

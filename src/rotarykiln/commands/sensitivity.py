@@ -25,11 +25,14 @@ from __future__ import annotations
 
 import argparse
 
-from rotarykiln.commands._args import out_dir, plain, print_json
+from rotarykiln.commands._args import check_count, out_dir, plain, print_json
 from rotarykiln.commands.sweep import (
+    MAX_CASES,
     _load_case,
     _load_model,
     add_study_options,
+    check_design_values,
+    check_study_options,
     report_warnings,
     runner_options,
 )
@@ -69,12 +72,28 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+def check_param_ranges(base: dict, params, model: str) -> None:
+    """The extremes of each --param distribution (0.1 % and 99.9 % points) set alone on the
+    case and validated (:func:`rotarykiln.commands.sweep.check_design_values`)."""
+    from rotarykiln.studies.design import CaseSpec
+
+    design = []
+    for p in params:
+        for u in (1e-3, 1 - 1e-3):
+            value = float(p.ppf([u])[0])
+            design.append(CaseSpec(0, {p.path: f"{value!r} {p.unit}".strip()}))
+    check_design_values(base, design, "--param", model)
+
+
 def run(args) -> int:
     if not args.param:
         raise InputError("--param", message="--param: missing (at least one PATH=DIST(ARGS))")
+    check_count("--n", args.n, 1, MAX_CASES)
+    check_study_options(args)
     params = as_params(args.param)
     base = _load_case(args.case)
     func = _load_model(args.model)
+    check_param_ranges(base, params, args.model)
     folder = out_dir(args.out, "sensitivity")
     opts = runner_options(args, folder)
     if args.method == "uncertainty":

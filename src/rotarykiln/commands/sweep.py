@@ -31,7 +31,7 @@ import sys
 from pathlib import Path
 
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.commands._args import out_dir, plain, print_json
+from rotarykiln.commands._args import check_count, out_dir, plain, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.studies import grid, one_at_a_time, run_sweep
 from rotarykiln.studies.design import as_params, latin_hypercube, monte_carlo, sobol_sequence
@@ -109,6 +109,41 @@ def add_study_options(p, params: bool = True) -> None:
         default=None,
         help="progress bar on stderr (default: when it is a terminal)",
     )
+
+
+MAX_CASES = 100_000  # cases of one design (--lhs/--sobol/--mc N, sensitivity --n)
+
+
+def check_study_options(args) -> None:
+    """The shared options in their ranges (one line naming the option otherwise)."""
+    check_count("--workers", getattr(args, "workers", None), 1, 1024)
+    check_count("--seed", getattr(args, "seed", None), 0, 2**32 - 1)
+
+
+def check_design_values(base: dict, design, option: str, model: str) -> None:
+    """Refuse, before anything runs, a design value the case file would refuse (a wrong unit,
+    a value out of its physical range), for the models that read a case file (:data:`MODELS`):
+    each distinct value of each field is set alone on the base case and validated."""
+    from rotarykiln.case import parse_case
+    from rotarykiln.studies.models import MODELS
+    from rotarykiln.studies.paths import with_values
+
+    if model not in MODELS:
+        return  # a user's function: its own input rules
+    seen: dict[str, dict[str, object]] = {}
+    for spec in design:
+        for path, value in spec.values.items():
+            seen.setdefault(path, {}).setdefault(repr(value), value)
+    for path, values in seen.items():
+        items = list(values.values())
+        if len(items) > 50:  # a sampled design: its extremes
+            numbers = [v for v in items if isinstance(v, int | float)]
+            items = [min(numbers), max(numbers)] if len(numbers) == len(items) else items[:50]
+        for value in items:
+            try:
+                parse_case(with_values(base, {path: value}))
+            except InputError as exc:
+                raise InputError(option, message=f"{option}: {exc}") from None
 
 
 def runner_options(args, folder) -> dict:
@@ -193,6 +228,9 @@ def run(args) -> int:
             "exactly one design (--grid, --oat, --lhs N, --sobol N or --mc N)",
         )
     kind = kinds[0]
+    if kind in SAMPLED:
+        check_count(f"--{kind}", getattr(args, kind), 1, MAX_CASES)
+    check_study_options(args)
     if kind in SAMPLED and not args.param:
         raise InputError(f"--{kind}", getattr(args, kind), "given with --param PATH=DIST(ARGS)")
     if kind not in SAMPLED and args.param:
@@ -211,6 +249,8 @@ def run(args) -> int:
         design = one_at_a_time(_ranges(args.oat, "--oat"))
     else:
         design = SAMPLED[kind](as_params(args.param), getattr(args, kind), seed=args.seed)
+    option = "--param" if kind in SAMPLED else f"--{kind}"
+    check_design_values(base, design, option, args.model)
     folder = out_dir(args.out, "results") if args.out else None
     res = run_sweep(func, base, design, **runner_options(args, folder))
     if folder is not None:
