@@ -11,15 +11,16 @@ exits with code 1. Warnings print as one ``warning:`` line each.
 
 from __future__ import annotations
 
-import argparse
-import importlib
-import os
-import pkgutil
-import sys
-import warnings
+from rotarykiln.commands._signals import handled, install_early, signal_exit
 
-# light imports only: the signal handlers (commands._signals) are set a few ms after start
-from rotarykiln.commands._signals import handled, signal_exit
+install_early()  # the program: SIGINT/SIGTERM print one line from here on, not a traceback
+
+import argparse  # noqa: E402
+import importlib  # noqa: E402
+import os  # noqa: E402
+import pkgutil  # noqa: E402
+import sys  # noqa: E402
+import warnings  # noqa: E402
 
 __all__ = ["build_parser", "main"]
 

@@ -11,10 +11,12 @@ handlers are in place a few milliseconds after Python starts.
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
+import sys
 import threading
 
-__all__ = ["Terminated", "handled", "signal_exit"]
+__all__ = ["Terminated", "handled", "install_early", "signal_exit"]
 
 
 class Terminated(KeyboardInterrupt):
@@ -28,6 +30,32 @@ def signal_exit(exc: KeyboardInterrupt) -> tuple[int, str]:
     if isinstance(exc, Terminated):
         return 128 + signal.SIGTERM, "terminated"
     return 128 + signal.SIGINT, "interrupted"
+
+
+def _is_program() -> bool:
+    """Whether this process is the ``rotarykiln`` program (console script or ``python -m``)."""
+    spec = getattr(sys.modules.get("__main__"), "__spec__", None)
+    if spec is not None and spec.name == "rotarykiln.__main__":
+        return True
+    return bool(sys.argv) and os.path.basename(sys.argv[0]) == "rotarykiln"
+
+
+def _exit_now(signum, frame):  # before main(): nothing written yet, nothing to clean
+    text = "terminated" if signum == signal.SIGTERM else "interrupted"
+    try:
+        sys.stderr.write(f"rotarykiln: {text}\n")
+        sys.stderr.flush()
+    finally:
+        os._exit(128 + signum)
+
+
+def install_early() -> None:
+    """In the ``rotarykiln`` program only (not when imported by a test or the app): from the
+    first lines of :mod:`rotarykiln.cli` until :func:`handled` takes over, SIGINT and SIGTERM
+    print one line and exit at once (no module is half imported into a traceback)."""
+    if _is_program() and threading.current_thread() is threading.main_thread():
+        for s in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(s, _exit_now)
 
 
 @contextlib.contextmanager
