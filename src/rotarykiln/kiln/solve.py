@@ -26,14 +26,22 @@ SEQUENCE_INERT_MIN = 200
 
 
 def _hot_temperature(res: KilnResidual) -> float:
-    """Temperature the inlet gas would reach with all the heat released in it, K."""
+    """The hottest heat source, K: the inlet gas with all the heat released in it, a heating
+    jacket's inlet gas, or a heater zone's shell set-point (for the initial guess and the
+    scale of the energy rows; a kiln heated through its shell starts warm, not at its cold
+    sweep gas)."""
     k = res.kiln
-    if k.heat_release <= 0:
-        return k.gas_inlet_temperature
-    t = np.linspace(200.0, 3200.0, 601)
-    h = res.mixture.species_enthalpy(t) @ res.gas_inlet
-    target = float(res.mixture.species_enthalpy(k.gas_inlet_temperature) @ res.gas_inlet)
-    return float(np.interp(target + k.heat_release, h, t))
+    hot = k.gas_inlet_temperature
+    if k.heat_release > 0:
+        t = np.linspace(200.0, 3200.0, 601)
+        h = res.mixture.species_enthalpy(t) @ res.gas_inlet
+        target = float(res.mixture.species_enthalpy(k.gas_inlet_temperature) @ res.gas_inlet)
+        hot = float(np.interp(target + k.heat_release, h, t))
+    jacket = getattr(k, "jacket", None)
+    if jacket is not None:
+        hot = max(hot, float(jacket.inlet_temperature))
+    set_points = [z.shell_temperature for z in k.heaters if z.shell_temperature is not None]
+    return max([hot, *set_points])
 
 
 def _initial_guess(res: KilnResidual) -> np.ndarray:
