@@ -65,6 +65,6 @@ def test_bad_input():
 def test_regime_map_plot():
     import matplotlib.pyplot as plt
 
-    ax = rg.classify_regime(0.084, 0.3).plot()
-    assert ax.get_yscale() == "log"
-    plt.close(ax.figure)
+    fig = rg.classify_regime(0.084, 0.3).plot()
+    assert fig.axes[0].get_yscale() == "log"
+    plt.close(fig)

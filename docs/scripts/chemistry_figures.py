@@ -92,12 +92,12 @@ for label, prof in [("hot", (zT, TT)), ("cold", (zT, T_cold))]:
             f"segregated X = {res.segregated:.5f}"
         )
         if label == "cold" and N == 10:
-            ax = res.plot()
-            ax.set_title("cold profile, tanks-in-series N = 10", fontsize="small")
-            ax.figure.set_size_inches(5.5, 3.6)
-            ax.figure.tight_layout()
-            ax.figure.savefig(OUT / "chemistry_segregated_flow.png", dpi=90)
-            plt.close(ax.figure)
+            fig = res.plot()
+            fig.axes[0].set_title("cold profile, tanks-in-series N = 10", fontsize="small")
+            fig.set_size_inches(5.5, 3.6)
+            fig.tight_layout()
+            fig.savefig(OUT / "chemistry_segregated_flow.png", dpi=90)
+            plt.close(fig)
 
 # 4. chapter-5 design with the isothermal stand-in model
 case = builtin_case("charcoal_activation")

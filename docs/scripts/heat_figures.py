@@ -33,10 +33,10 @@ def main():
     OUT.mkdir(parents=True, exist_ok=True)
     # 1. one run with its measurements
     sol = solve_kiln(tscheng_kiln("A16"))
-    ax = sol.plot()
-    ax.axvspan(1.25, 1.78, color="0.9", zorder=0)
-    ax.figure.savefig(OUT / "kiln_tscheng_A16.png", dpi=90, bbox_inches="tight")
-    plt.close(ax.figure)
+    fig = sol.plot()
+    fig.axes[0].axvspan(1.25, 1.78, color="0.9", zorder=0)
+    fig.savefig(OUT / "kiln_tscheng_A16.png", dpi=90, bbox_inches="tight")
+    plt.close(fig)
 
     # 2. parity of all 44 runs, and the per-run table
     fig, axes = plt.subplots(1, 2, figsize=(9, 4.2))

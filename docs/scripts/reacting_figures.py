@@ -44,9 +44,9 @@ for name in ("charcoal_activation", "limestone_calcination"):
         print(f"  {k}: {v}")
     rtd = residence_time_effects(case, kiln, sol)
     print("  ", rtd.summary())
-    ax = rtd.plot()
-    ax.figure.savefig(OUT / f"kiln_rtd_{name}.png", dpi=80)
-    plt.close(ax.figure)
+    fig = rtd.plot()
+    fig.savefig(OUT / f"kiln_rtd_{name}.png", dpi=80)
+    plt.close(fig)
 
 # residence-time effects with incomplete calcination: less gas (0.018 kg/s), Sherritt Pe and Pe 20
 for pe in (None, 20.0):
@@ -58,9 +58,9 @@ for pe in (None, 20.0):
     rtd = residence_time_effects(case, kiln, sol)
     print("limestone 0.018 kg/s gas, Pe", pe, rtd.summary())
     if pe is not None:
-        ax = rtd.plot()
-        ax.figure.savefig(OUT / "kiln_rtd_limestone_partial.png", dpi=80)
-        plt.close(ax.figure)
+        fig = rtd.plot()
+        fig.savefig(OUT / "kiln_rtd_limestone_partial.png", dpi=80)
+        plt.close(fig)
 
 # limestone with the CO2-equilibrium rate
 data = _data("limestone_calcination")

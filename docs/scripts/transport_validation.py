@@ -165,9 +165,9 @@ def figures():
         static_angle=np.radians(24.5),
         discharge_radius=0.037,
     )
-    ax = p.plot()
-    ax.figure.savefig(FIG / "transport_pool_profile.png", dpi=90, bbox_inches="tight")
-    plt.close(ax.figure)
+    fig = p.plot()
+    fig.savefig(FIG / "transport_pool_profile.png", dpi=90, bbox_inches="tight")
+    plt.close(fig)
     fig = design_chart(36.6, 3.66, np.pi / 30, np.radians(3), np.radians(40), density=1600).plot()
     fig.savefig(FIG / "transport_design_chart.png", dpi=90)
     plt.close(fig)

@@ -41,6 +41,13 @@ def build_parser() -> argparse.ArgumentParser:
         '"--diameter 0.4 m --speed 1.5 rpm --slope 2 deg --feed 62 kg/h".',
     )
     parser.add_argument("--version", action="version", version=f"rotarykiln {__version__}")
+    parser.add_argument(
+        "-v",
+        "--verbose",
+        action="count",
+        default=0,
+        help="log what long runs do on stderr (-v: steps, -vv: details); before the command",
+    )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda m: m.name):
         if info.name.startswith("_"):
@@ -88,6 +95,7 @@ def _main(argv: list[str] | None) -> int:
     previous = warnings.showwarning
     warnings.showwarning = _show_warning
     _shown.clear()
+    handler = _log_to_stderr(getattr(args, "verbose", 0))
     try:
         return int(args.func(args) or 0)
     except InputError as exc:
@@ -101,6 +109,31 @@ def _main(argv: list[str] | None) -> int:
         return 141
     finally:
         warnings.showwarning = previous
+        if handler is not None:
+            import logging
+
+            logger = logging.getLogger("rotarykiln")
+            logger.removeHandler(handler)
+            logger.setLevel(handler.previous_level)
+
+
+def _log_to_stderr(verbosity: int):
+    """``-v``: the package's INFO records on stderr, ``-vv``: DEBUG too; the handler or None.
+
+    The library configures no handler (each module has ``logging.getLogger(__name__)``); only
+    the command line does, for the ``rotarykiln`` loggers and for the time of one command.
+    """
+    if not verbosity:
+        return None
+    import logging
+
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("%(levelname)s %(name)s: %(message)s"))
+    logger = logging.getLogger("rotarykiln")
+    handler.previous_level = logger.level
+    logger.addHandler(handler)
+    logger.setLevel(logging.INFO if verbosity == 1 else logging.DEBUG)
+    return handler
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -27,6 +27,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import check_positive, check_range
+from rotarykiln.tables import with_units
 
 __all__ = [
     "CrossSection",
@@ -623,7 +624,7 @@ class CrossSection:
             k: np.atleast_1d(np.broadcast_to(v, np.broadcast(*self.as_dict().values()).shape))
             for k, v in self.as_dict().items()
         }
-        return pd.DataFrame(data)
+        return with_units(pd.DataFrame(data), "geometry.cross_section")
 
     def plot(self, ax=None):
         """Draw the cross-section (first point if arrays) with the bed shaded."""
@@ -646,4 +647,4 @@ class CrossSection:
         ax.set_xlabel("x (m)")
         ax.set_ylabel("y (m)")
         ax.legend(loc="upper right")
-        return ax
+        return ax.figure

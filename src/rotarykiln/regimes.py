@@ -34,6 +34,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, check_range
+from rotarykiln.tables import with_units
 
 __all__ = [
     "G",
@@ -277,7 +278,7 @@ class RegimeResult:
 
     def to_frame(self) -> pd.DataFrame:
         shape = np.broadcast(self.name, self.froude, self.fill).shape
-        return pd.DataFrame(
+        frame = pd.DataFrame(
             {
                 "regime": np.broadcast_to(self.name, shape).ravel(),
                 "froude": np.broadcast_to(self.froude, shape).ravel(),
@@ -286,6 +287,7 @@ class RegimeResult:
                 "criterion": self.criterion,
             }
         )
+        return with_units(frame, "regimes")
 
     def plot(self, ax=None):
         """The regime map with these operating points marked."""
@@ -383,7 +385,7 @@ def classify_regime(
 def plot_regime_map(fill=None, froude=None, *, bands: MellmannBands | None = None, ax=None):
     """Regime map (Mellmann bands): Froude number (log) against fill, operating point(s) marked.
 
-    Returns the matplotlib Axes.
+    Returns the matplotlib Figure.
     """
     import matplotlib.pyplot as plt
 
@@ -424,4 +426,4 @@ def plot_regime_map(fill=None, froude=None, *, bands: MellmannBands | None = Non
     ax.set_ylabel(r"Froude number $Fr = \omega^2 R/g$ (-)")
     ax.set_title("Transverse bed regimes (Mellmann 2001 bands)")
     ax.legend(loc="lower right", fontsize=8, framealpha=0.9)
-    return ax
+    return ax.figure

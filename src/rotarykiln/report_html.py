@@ -19,76 +19,9 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
+from rotarykiln.tables import split_unit  # the one suffix -> unit table
+
 __all__ = ["render_html_report", "split_unit", "write_html_report"]
-
-# key suffix -> unit, longest first (the naming convention of the summaries: "length_m",
-# "kiln_gas_outlet_flow_kg_s", "speed_rpm"...)
-_UNIT_SUFFIXES = [
-    ("_J_kg_K", "J/(kg K)"),
-    ("_percent", "%"),
-    ("_m2_s", "m2/s"),
-    ("_m3_s", "m3/s"),
-    ("_m3_h", "m3/h"),
-    ("_W_m2_K", "W/(m2 K)"),
-    ("_W_m_K", "W/(m K)"),
-    ("_kg_m3", "kg/m3"),
-    ("_rad_s", "rad/s"),
-    ("_kg_s", "kg/s"),
-    ("_kg_h", "kg/h"),
-    ("_W_m2", "W/m2"),
-    ("_J_kg", "J/kg"),
-    ("_W_m", "W/m"),
-    ("_m_s", "m/s"),
-    ("_rpm", "rpm"),
-    ("_deg", "deg"),
-    ("_rad", "rad"),
-    ("_min", "min"),
-    ("_1_s", "1/s"),
-    ("_kW", "kW"),
-    ("_MW", "MW"),
-    ("_s2", "s2"),
-    ("_Pa", "Pa"),
-    ("_m2", "m2"),
-    ("_m3", "m3"),
-    ("_mm", "mm"),
-    ("_kg", "kg"),
-    ("_K", "K"),
-    ("_W", "W"),
-    ("_J", "J"),
-    ("_m", "m"),
-    ("_s", "s"),
-    ("_h", "h"),
-]
-
-
-def split_unit(key: str) -> tuple[str, str]:
-    """Split a summary key into its name and its unit (``"length_m"`` -> ``("length", "m")``).
-
-    Parameters
-    ----------
-    key : str
-        A summary key following the naming convention ``<name>_<unit>``.
-
-    Returns
-    -------
-    tuple of str
-        The name with spaces for underscores, and the unit (``""`` when the key has none).
-
-    Examples
-    --------
-    >>> split_unit("kiln_gas_outlet_flow_kg_s")
-    ('kiln gas outlet flow', 'kg/s')
-    >>> split_unit("rtd_dispersion_m2_s")
-    ('rtd dispersion', 'm2/s')
-    >>> split_unit("drying_ahmad_onset_T_bed_K")
-    ('drying ahmad onset T bed', 'K')
-    >>> split_unit("froude")
-    ('froude', '')
-    """
-    for suffix, unit in _UNIT_SUFFIXES:
-        if key.endswith(suffix) and len(key) > len(suffix):
-            return key[: -len(suffix)].replace("_", " "), unit
-    return key.replace("_", " "), ""
 
 
 def _shown(value: Any) -> str:

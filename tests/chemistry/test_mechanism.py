@@ -164,5 +164,5 @@ def test_frame_and_plot():
     mech = Mechanism.builtin("calcination_luisser", "drying_ahmad")
     out = mech.rates(_state(4))
     df = out.to_frame()
-    assert "heat_absorbed [W/m]" in df and len(df) == 4
+    assert "heat_absorbed_W_m" in df and len(df) == 4
     assert out.plot() is not None

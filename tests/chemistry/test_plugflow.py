@@ -76,7 +76,7 @@ def test_charcoal_burn_off_and_frame():
     assert res.burn_off()[-1] == pytest.approx(100 * (1 - np.exp(-k * 6480.0)), rel=1e-5)
     assert res.flow("H2O(l)")[-1] < 1e-6
     df = res.to_frame()
-    assert {"z [m]", "t [s]", "Q_C [kg/s]"} <= set(df.columns)
+    assert {"z_m", "t_s", "bed_C_kg_s"} <= set(df.columns)
 
 
 def test_bad_inputs():

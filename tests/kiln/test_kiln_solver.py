@@ -142,7 +142,7 @@ def test_results_frame_and_plot():
     sol = solve_kiln(tscheng_kiln("A16"))
     df = sol.to_frame()
     assert len(df) == len(sol.z_nodes)
-    for col in ("z_m", "T_gas_K", "T_bed_K", "T_wall_K", "T_shell_K", "q_shell_loss_W_per_m"):
+    for col in ("z_m", "T_gas_K", "T_bed_K", "T_wall_K", "T_shell_K", "q_shell_loss_W_m"):
         assert col in df
     assert df.notna().all().all()
     ax = sol.plot().axes[0]

@@ -133,5 +133,5 @@ def test_frame_and_plot():
     df = p.to_frame()
     assert list(df.columns)[:3] == ["z_m", "x_from_discharge_m", "depth_m"]
     assert len(df) == 50
-    ax = p.plot()
+    ax = p.plot().axes[0]
     assert ax.get_xlabel().startswith("distance")

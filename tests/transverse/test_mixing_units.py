@@ -68,7 +68,7 @@ def test_active_layer_frame_and_plot():
     al = active_layer(0.285, np.array([5, 10]) * RPM, 0.25)
     df = al.to_frame()
     assert len(df) == 2
-    assert np.allclose(df.active_area + df.stagnant_area, df.bed_area)
+    assert np.allclose(df.active_area_m2 + df.stagnant_area_m2, df.bed_area_m2)
     assert al.plot() is not None
 
 

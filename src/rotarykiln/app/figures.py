@@ -13,12 +13,13 @@ from rotarykiln.units import to_si
 
 __all__ = ["composition_figure", "measured_points", "temperature_figure"]
 
-# the colours of rotarykiln.plot: brown bed, purple inner wall
+# the colours of the matplotlib figures (rotarykiln.kiln.profiles.COLOURS): brown bed, red gas,
+# blue inner wall, grey shell
 COLOURS = {
     "bed": "#8c564b",
     "gas": "#d62728",
-    "wall": "#9467bd",
-    "shell": "#1f77b4",
+    "wall": "#1f77b4",
+    "shell": "#7f7f7f",
     "gas_wall": "#ff7f0e",
 }
 SYMBOLS = {"gas": "circle-open", "bed": "square-open", "wall": "triangle-up-open"}
@@ -101,7 +102,7 @@ def temperature_figure(profiles: dict[str, list], title: str, raw: Any = None) -
                 line={
                     "color": COLOURS.get(name),
                     "width": 2.5,
-                    "dash": "dash" if name == "shell" else "solid",
+                    "dash": {"shell": "dash", "wall": "dashdot"}.get(name, "solid"),
                 },
                 hovertemplate="%{y:.1f} K",
             )

@@ -21,6 +21,7 @@ from rotarykiln.chemistry.ratelaws import RateContext
 from rotarykiln.chemistry.reaction import Reaction, builtin_reactions, load_reactions
 from rotarykiln.chemistry.species import SpeciesTable, check_mass_fractions, default_species
 from rotarykiln.errors import InputError, check_nonnegative, check_positive
+from rotarykiln.tables import with_units
 
 __all__ = ["CellState", "CellRates", "Mechanism"]
 
@@ -193,13 +194,15 @@ class CellRates:
         return self.production[:, idx].sum(axis=1)
 
     def to_frame(self) -> pd.DataFrame:
-        cols = {f"r_{r} [kg/s/m]": self.reaction_rate[:, j] for j, r in enumerate(self.reactions)}
-        cols.update({f"w_{s} [kg/s/m]": self.production[:, i] for i, s in enumerate(self.species)})
-        cols["heat_absorbed [W/m]"] = self.heat_absorbed
-        return pd.DataFrame(cols)
+        cols = {f"rate_{r}_kg_s_m": self.reaction_rate[:, j] for j, r in enumerate(self.reactions)}
+        cols.update(
+            {f"production_{s}_kg_s_m": self.production[:, i] for i, s in enumerate(self.species)}
+        )
+        cols["heat_absorbed_W_m"] = self.heat_absorbed
+        return with_units(pd.DataFrame(cols), "chemistry.mechanism")
 
     def plot(self, x=None, ax=None):
-        """Reaction rates against ``x`` (cell index by default); returns the Axes."""
+        """Reaction rates against ``x`` (cell index by default); returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -207,10 +210,10 @@ class CellRates:
         xs = np.arange(self.reaction_rate.shape[0]) if x is None else np.asarray(x)
         for j, r in enumerate(self.reactions):
             ax.plot(xs, self.reaction_rate[:, j], label=r)
-        ax.set_xlabel("cell" if x is None else "position")
-        ax.set_ylabel("rate [kg/(s m)]")
+        ax.set_xlabel("cell" if x is None else "z (m)")
+        ax.set_ylabel("rate (kg/(s m))")
         ax.legend()
-        return ax
+        return ax.figure
 
 
 @dataclass(frozen=True)

@@ -24,6 +24,7 @@ from scipy.integrate import solve_ivp
 from rotarykiln.chemistry.balance import check_stream_balance
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
 from rotarykiln.errors import ConvergenceError, InputError, check_nonnegative, check_positive
+from rotarykiln.tables import with_units
 
 __all__ = ["PlugFlowResult", "integrate_plug_flow", "as_profile"]
 
@@ -130,16 +131,16 @@ class PlugFlowResult:
         return check_stream_balance({**self.bed_mass_flow_in, **gas_in}, out, species, rtol=np.inf)
 
     def to_frame(self) -> pd.DataFrame:
-        cols = {"z [m]": self.z, "t [s]": self.t, "T_bed [K]": self.T_bed}
+        cols = {"z_m": self.z, "t_s": self.t, "T_bed_K": self.T_bed}
         for i, s in enumerate(self.bed_species):
-            cols[f"Q_{s} [kg/s]"] = self.bed_mass_flow[:, i]
+            cols[f"bed_{s}_kg_s"] = self.bed_mass_flow[:, i]
         for j, g in enumerate(self.gas_species):
-            cols[f"released_{g} [kg/s]"] = self.gas_released[:, j]
-        cols["heat_absorbed [W]"] = self.heat_absorbed
-        return pd.DataFrame(cols)
+            cols[f"released_{g}_kg_s"] = self.gas_released[:, j]
+        cols["heat_absorbed_W"] = self.heat_absorbed
+        return with_units(pd.DataFrame(cols), "chemistry.plugflow")
 
     def plot(self, ax=None):
-        """Bed species flows against residence time; returns the Axes."""
+        """Bed species flows against residence time; returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -147,10 +148,10 @@ class PlugFlowResult:
         for i, s in enumerate(self.bed_species):
             if np.any(self.bed_mass_flow[:, i] > 0):
                 ax.plot(self.t, self.bed_mass_flow[:, i], label=s)
-        ax.set_xlabel("residence time [s]")
-        ax.set_ylabel("bed mass flow [kg/s]")
+        ax.set_xlabel("residence time (s)")
+        ax.set_ylabel("bed mass flow (kg/s)")
         ax.legend()
-        return ax
+        return ax.figure
 
 
 def integrate_plug_flow(

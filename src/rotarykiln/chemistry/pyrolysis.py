@@ -18,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
+from rotarykiln.tables import with_units
 
 __all__ = [
     "WEN_YEN_PARAMETERS",
@@ -160,16 +161,18 @@ class ShaleTable:
     decay_constant: np.ndarray  # K
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame(
+        """The table; ``enthalpy_J_kg`` per kg of shale."""
+        frame = pd.DataFrame(
             {
                 "material": self.material,
                 "mass_fraction": self.mass_fraction,
                 "T_low_K": self.T_low,
                 "T_high_K": self.T_high,
-                "enthalpy_J_per_kg_shale": self.enthalpy,
+                "enthalpy_J_kg": self.enthalpy,
                 "decay_constant_K": self.decay_constant,
             }
         )
+        return with_units(frame, "chemistry.pyrolysis.oil_shale")
 
 
 @lru_cache(maxsize=1)

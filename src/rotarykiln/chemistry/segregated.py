@@ -18,6 +18,7 @@ hold-up :math:`m' = \\sum_j Q_j\\,\\tau/L`, so one vectorised rate evaluation se
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -28,6 +29,8 @@ from scipy.integrate import trapezoid
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
 from rotarykiln.chemistry.plugflow import as_profile
 from rotarykiln.errors import ConvergenceError, InputError, check_nonnegative, check_positive
+from rotarykiln.progress import progress_bar
+from rotarykiln.tables import with_units
 
 __all__ = [
     "SegregatedResult",
@@ -36,6 +39,8 @@ __all__ = [
     "batch_plug_flow_conversion",
     "kiln_segregated_conversion",
 ]
+
+log = logging.getLogger(__name__)
 
 
 def rtd_arrays(rtd, t=None, t_max=None, n: int = 400) -> tuple[np.ndarray, np.ndarray]:
@@ -123,24 +128,39 @@ class SegregatedResult:
     class_conversion: np.ndarray | None = None
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame({"tau [s]": self.tau, "E [1/s]": self.E, "X [-]": self.conversion})
+        frame = pd.DataFrame({"tau_s": self.tau, "E_1_s": self.E, "conversion": self.conversion})
+        return with_units(frame, "chemistry.segregated")
 
     def plot(self, ax=None):
-        """X(tau) with the RTD on a twin axis and both averages; returns the Axes."""
+        """X(tau) with the RTD on a twin axis and both averages; returns the Figure."""
         import matplotlib.pyplot as plt
 
-        if ax is None:
-            _, ax = plt.subplots()
+        own = ax is None
+        if own:
+            _, ax = plt.subplots(figsize=(6.4, 4.6))
         ax.plot(self.tau, self.conversion, label="X(tau), parcel")
         ax.axhline(self.segregated, ls="--", color="C1", label=f"segregated {self.segregated:.3f}")
         ax.axhline(self.plug, ls=":", color="C2", label=f"plug flow {self.plug:.3f}")
-        ax.set_xlabel("residence time [s]")
-        ax.set_ylabel("conversion [-]")
+        ax.set_xlabel("residence time (s)")
+        ax.set_ylabel("conversion (-)")
         ax2 = ax.twinx()
-        ax2.fill_between(self.tau, self.E, alpha=0.2, color="C3")
-        ax2.set_ylabel("E(t) [1/s]")
-        ax.legend(loc="lower right")
-        return ax
+        ax2.fill_between(self.tau, self.E, alpha=0.2, color="C3", label="E(t), RTD (right axis)")
+        ax2.set_ylabel("E(t) (1/s)")
+        # one legend for both axes, below them: inside it would hide a curve
+        lines = ax.get_legend_handles_labels()
+        shade = ax2.get_legend_handles_labels()
+        ax.legend(
+            lines[0] + shade[0],
+            lines[1] + shade[1],
+            fontsize=8,
+            ncol=2,
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.14),
+            frameon=False,
+        )
+        if own:
+            ax.figure.tight_layout()
+        return ax.figure
 
 
 def segregated_average(
@@ -412,9 +432,17 @@ def batch_plug_flow_conversion(
     h = np.minimum(h, max_step)
     rejected = np.zeros(nc, dtype=bool)
     K = np.empty((7, nb, nc))
+    log.debug("batched plug flow: %d residence times, %d bed species", nc, nb)
+    bar = progress_bar(length, desc=f"{nc} RTD classes", unit="m")
+    shown = 0.0  # the bar: how far along the kiln the slowest class has come
     for _ in range(200_000):
         done = z >= length
+        front = float(min(z.min(), length))
+        if front > shown:
+            bar.update(front - shown)
+            shown = front
         if done.all():
+            bar.close()
             break
         z_next = knots[np.minimum(np.searchsorted(knots, z, side="right"), knots.size - 1)]
         hs = np.minimum(h, max_step)
@@ -440,6 +468,7 @@ def batch_plug_flow_conversion(
         f0 = np.where(ok, K[6], f0)
         small = ~done & ~ok & (h < 1e-12 * length)
         if small.any():
+            bar.close()
             k = int(np.flatnonzero(small)[0])
             raise ConvergenceError(
                 "batched plug-flow integration: step size underflow",
@@ -447,6 +476,7 @@ def batch_plug_flow_conversion(
                 residence_time=float(taus[k]),
             )
     else:
+        bar.close()
         k = int(np.flatnonzero(z < length)[0])
         raise ConvergenceError(
             "batched plug-flow integration: too many steps",

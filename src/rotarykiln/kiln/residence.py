@@ -24,6 +24,7 @@ the RTD average (:func:`rotarykiln.chemistry.segregated.kiln_segregated_conversi
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 
 import numpy as np
@@ -35,6 +36,8 @@ from rotarykiln.rtd.correlations import sherritt_dispersion
 from rotarykiln.rtd.dispersion import get_model
 
 __all__ = ["KilnRTD", "ResidenceTimeEffects", "residence_time_effects"]
+
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -74,7 +77,7 @@ class ResidenceTimeEffects:
     ``kiln_conversion`` is the discretisation error of the kiln grid);
     ``plug``: plug flow through the frozen profiles at the mean residence time of the RTD;
     ``segregated``: the RTD average; ``peclet``, ``dispersion`` (m2/s); ``result``
-    (:class:`~rotarykiln.chemistry.segregated.SegregatedResult`).
+    (:class:`~rotarykiln.chemistry.segregated.SegregatedResult`); ``name``: the kiln's case.
     """
 
     species: str
@@ -83,6 +86,7 @@ class ResidenceTimeEffects:
     peclet: float
     dispersion: float
     result: SegregatedResult
+    name: str = ""
 
     def summary(self) -> dict:
         r = self.result
@@ -98,9 +102,17 @@ class ResidenceTimeEffects:
         }
 
     def plot(self, ax=None):
-        ax = self.result.plot(ax)
-        ax.set_title(f"{self.species}: Pe = {self.peclet:.0f}")
-        return ax
+        """X(tau) over the RTD (:meth:`SegregatedResult.plot`) titled with the species and the
+        Peclet number; returns the Figure."""
+        if ax is None:
+            import matplotlib.pyplot as plt
+
+            _, ax = plt.subplots(figsize=(6.4, 4.6))
+        self.result.plot(ax)
+        title = f"{self.species} over the RTD (Pe = {self.peclet:.0f})"
+        ax.set_title(f"{self.name}: {title}" if self.name else title, fontsize="medium")
+        ax.figure.tight_layout()
+        return ax.figure
 
 
 def fed_reactant(kiln) -> str | None:
@@ -163,6 +175,9 @@ def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: i
         else (z, gas.get("H2O", np.zeros(len(z) + 1))[out]),
     }
     t_max = rtd.mean + 8 * np.sqrt(rtd.variance)
+    log.info(
+        "residence-time effects of %s: %s RTD, Pe = %.3g, %d classes", species, model, pe, n_tau
+    )
     res = kiln_segregated_conversion(
         kiln.mechanism,
         kiln.feed,
@@ -185,6 +200,7 @@ def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: i
         float(pe),
         float(dispersion),
         res,
+        str(getattr(sol, "name", "") or ""),
     )
 
 

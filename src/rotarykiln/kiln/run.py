@@ -59,7 +59,7 @@ def kiln_runner(case, out: Path) -> dict:
 
     rtd = residence_time_effects(case, kiln, sol)
     summary = write_solution_files(sol, out, "kiln", extra=rtd.summary(), dpi=100)
-    ax = rtd.plot()
-    save_figure_atomic(out / "kiln_rtd.png", ax.figure, dpi=100)
-    plt.close(ax.figure)
+    fig = rtd.plot()
+    save_figure_atomic(out / "kiln_rtd.png", fig, dpi=100)
+    plt.close(fig)
     return summary

@@ -9,6 +9,7 @@ import pandas as pd
 
 from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.kiln.profiles import heat_flow_columns, plot_temperature_profiles
+from rotarykiln.tables import with_units
 
 __all__ = ["KilnSolution"]
 
@@ -215,7 +216,7 @@ class KilnSolution:
         for r, v in self.reaction_rates.items():
             data[f"rate_{r}_kg_s_m"] = np.interp(self.z_nodes, self.z, v)
         data.update(heat_flow_columns(self.fluxes, lambda v: np.interp(self.z_nodes, self.z, v)))
-        return pd.DataFrame(data)
+        return with_units(pd.DataFrame(data), "kiln")
 
     def plot(self, ax=None):
         """Temperatures (left) and, when the bed reacts, solids and gas flows (right); returns
@@ -245,7 +246,11 @@ class KilnSolution:
                 a1.plot(self.z_nodes, q * 1e3, ls="--", label=f"gas {s}")
         a1.set_xlabel("z from solids inlet (m)")
         a1.set_ylabel("mass flow (g/s)")
-        a1.set_title(f"dry solids mass loss {self.burn_off:.2f} %")
-        a1.legend(fontsize=7, ncol=2)
+        a1.set_title(f"species flows; dry solids mass loss {self.burn_off:.2f} %")
+        a1.legend(
+            fontsize=8, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False
+        )
+        axes[0].set_title("temperatures")
+        fig.suptitle(self.name)
         fig.tight_layout()
         return fig

@@ -8,6 +8,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from rotarykiln.tables import with_units
+
 __all__ = ["TransientSolution", "tracer_moments"]
 
 
@@ -128,7 +130,7 @@ class TransientSolution:
         for s, q in self.gas_flows().items():
             data[f"gas_{s}_kg_s"] = q.ravel()
         data["tracer_kg"] = self.tracer.ravel()
-        return pd.DataFrame(data)
+        return with_units(pd.DataFrame(data), "kiln.transient")
 
     def outlet_frame(self) -> pd.DataFrame:
         """Outlet quantities, boundary flows and inventories against time."""
@@ -140,7 +142,7 @@ class TransientSolution:
             row.update({f"gas_out_{s}_kg_s": v for s, v in o["gas_outlet"].items()})
             row["inventory_energy_J"] = self.inventory_energy[k]
             rows.append(row)
-        return pd.DataFrame(rows)
+        return with_units(pd.DataFrame(rows), "kiln.transient")
 
     # --- balances -------------------------------------------------------------------------
     def energy_conservation(self) -> np.ndarray:
@@ -234,15 +236,19 @@ class TransientSolution:
         return fig
 
     def plot_outlets(self):
-        """Outlet temperatures, and the heat flows across the boundary, against time."""
+        """Outlet temperatures, and the heat flows across the boundary, against time; returns the
+        Figure."""
         import matplotlib.pyplot as plt
+
+        from rotarykiln.kiln.profiles import COLOURS
 
         df = self.outlet_frame()
         th = df["t_s"] / 3600.0
         fig, (a0, a1) = plt.subplots(1, 2, figsize=(11, 4.2))
-        a0.plot(th, df["bed_outlet_temperature_K"], color="tab:brown", label="solids discharge")
-        a0.plot(th, df["gas_outlet_temperature_K"], color="tab:red", label="gas outlet")
-        a0.plot(th, self.t_wall[:, :, -1].mean(-1), color="tab:blue", ls="--", label="shell, mean")
+        a0.plot(th, df["bed_outlet_temperature_K"], color=COLOURS["bed"], label="solids discharge")
+        a0.plot(th, df["gas_outlet_temperature_K"], color=COLOURS["gas"], label="gas outlet")
+        shell = self.t_wall[:, :, -1].mean(-1)
+        a0.plot(th, shell, color=COLOURS["shell"], ls="--", label="shell, mean")
         a0.set_xlabel("time (h)")
         a0.set_ylabel("temperature (K)")
         a0.legend(fontsize=8)
@@ -250,7 +256,7 @@ class TransientSolution:
         a1.plot(th, (df["energy_out_W"]) / 1e3, label="enthalpy out (solids + gas)")
         a1.plot(th, df["reaction_heat_W"] / 1e3, label="heat of reaction")
         a1.set_xlabel("time (h)")
-        a1.set_ylabel("kW")
+        a1.set_ylabel("heat flow (kW)")
         a1.legend(fontsize=8)
         fig.suptitle(self.name)
         fig.tight_layout()

@@ -31,6 +31,7 @@ import pandas as pd
 from scipy import integrate, sparse
 
 from rotarykiln.errors import ConvergenceError, InputError, check_positive
+from rotarykiln.tables import with_units
 
 __all__ = [
     "InletSignal",
@@ -95,7 +96,9 @@ class PDEResult:
     n_steps: int
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame({"theta": self.theta, "outlet": self.outlet})
+        return with_units(
+            pd.DataFrame({"theta": self.theta, "outlet": self.outlet}), "rtd.dispersion_pde"
+        )
 
     def plot(self, ax=None):
         import matplotlib.pyplot as plt
@@ -106,7 +109,7 @@ class PDEResult:
         ax.set_xlabel(r"$\theta = t/\tau$")
         ax.set_ylabel("outlet response")
         ax.legend()
-        return ax
+        return ax.figure
 
 
 def _operator(pe: float, n: int, h: float, volumes: np.ndarray):

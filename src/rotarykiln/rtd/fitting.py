@@ -33,6 +33,7 @@ from scipy import optimize, stats
 from rotarykiln.errors import ConvergenceError, InputError, check_positive
 from rotarykiln.rtd.dispersion import MODELS, get_model
 from rotarykiln.rtd.tracer import TracerResult
+from rotarykiln.tables import with_units
 
 __all__ = [
     "FitResult",
@@ -274,9 +275,10 @@ class FitResult(_ModelParameters):
         return out
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame(
-            {"t_s": self.t, "E_data_per_s": self.data, "E_fit_per_s": self.fitted}
-        ).assign(residual_per_s=self.residuals)
+        frame = pd.DataFrame(
+            {"t_s": self.t, "E_data_1_s": self.data, "E_fit_1_s": self.fitted}
+        ).assign(residual_1_s=self.residuals)
+        return with_units(frame, f"rtd.fit.{self.model}")
 
     def plot(self, ax=None, *, minutes: bool = True):
         """Data points, fitted curve (solid) and moment-method curve (dashed), as seed 003 Fig. 7."""
@@ -299,10 +301,10 @@ class FitResult(_ModelParameters):
                 "--",
                 label=f"moments: {name} = {self.moments.shape:.4g}",
             )
-        ax.set_xlabel("t [min]" if minutes else "t [s]")
-        ax.set_ylabel("E(t) [1/min]" if minutes else "E(t) [1/s]")
+        ax.set_xlabel("t (min)" if minutes else "t (s)")
+        ax.set_ylabel("E(t) (1/min)" if minutes else "E(t) (1/s)")
         ax.legend(fontsize="small", loc="upper right")
-        return ax
+        return ax.figure
 
 
 def _data_moments(t, e):

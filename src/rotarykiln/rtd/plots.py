@@ -32,7 +32,8 @@ def parity_plot(
 
     Returns
     -------
-    matplotlib Axes
+    matplotlib Figure
+        The figure of ``ax`` (a new one when ``ax`` is None).
     """
     import matplotlib.pyplot as plt
 
@@ -64,4 +65,4 @@ def parity_plot(
     ax.set_title(f"+/-{100 * band:.0f} % lines", fontsize="small")
     if label:
         ax.legend()
-    return ax
+    return ax.figure

@@ -31,6 +31,7 @@ from rotarykiln.rtd.correlations import (
 )
 from rotarykiln.rtd.dispersion import get_model
 from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
+from rotarykiln.tables import with_units
 
 __all__ = ["RTDPrediction", "peclet_from_case", "predict_from_case", "predict_rtd", "run_section"]
 
@@ -69,10 +70,11 @@ class RTDPrediction:
         return out
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame({"t_s": self.t, "E_per_s": self.exit_age, "F": self.cumulative})
+        frame = pd.DataFrame({"t_s": self.t, "E_1_s": self.exit_age, "F": self.cumulative})
+        return with_units(frame, "rtd.predict")
 
     def plot(self, ax=None, *, minutes: bool = True):
-        """E(t) of the prediction. Returns the Axes."""
+        """E(t) of the prediction. Returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -80,10 +82,10 @@ class RTDPrediction:
         k = 60.0 if minutes else 1.0
         ax.plot(self.t / k, self.exit_age * k, "-", label=f"{self.model}, Pe = {self.peclet:.4g}")
         ax.axvline(self.mean_residence_time / k, color="0.5", linestyle=":", label="mean")
-        ax.set_xlabel("t [min]" if minutes else "t [s]")
-        ax.set_ylabel("E(t) [1/min]" if minutes else "E(t) [1/s]")
+        ax.set_xlabel("t (min)" if minutes else "t (s)")
+        ax.set_ylabel("E(t) (1/min)" if minutes else "E(t) (1/s)")
         ax.legend()
-        return ax
+        return ax.figure
 
 
 def predict_rtd(

@@ -31,6 +31,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import InputError
+from rotarykiln.tables import with_units
 from rotarykiln.units import to_si
 
 __all__ = [
@@ -99,19 +100,20 @@ class TracerResult:
         return self.exit_age * self.mean
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame(
+        frame = pd.DataFrame(
             {
                 "t_s": self.t,
                 "signal": self.signal,
-                "E_per_s": self.exit_age,
+                "E_1_s": self.exit_age,
                 "F": self.cumulative,
                 "theta": self.theta,
                 "E_theta": self.exit_age_theta,
             }
         )
+        return with_units(frame, "rtd.tracer", {"signal": "a.u."})
 
     def plot(self, ax=None, *, minutes: bool = True, **kwargs):
-        """E(t) points (per minute against minutes by default). Returns the Axes."""
+        """E(t) points (per minute against minutes by default). Returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -121,9 +123,9 @@ class TracerResult:
         kwargs.setdefault("linestyle", "none")
         kwargs.setdefault("label", "data")
         ax.plot(self.t / k, self.exit_age * k, **kwargs)
-        ax.set_xlabel("t [min]" if minutes else "t [s]")
-        ax.set_ylabel("E(t) [1/min]" if minutes else "E(t) [1/s]")
-        return ax
+        ax.set_xlabel("t (min)" if minutes else "t (s)")
+        ax.set_ylabel("E(t) (1/min)" if minutes else "E(t) (1/s)")
+        return ax.figure
 
 
 def _weights(t: np.ndarray, kind: str) -> np.ndarray:

@@ -31,6 +31,7 @@ from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.studies.io import save_figure_atomic
 from rotarykiln.studies.models import profile_columns
 from rotarykiln.studies.paths import get_path, with_values
+from rotarykiln.tables import with_units
 
 __all__ = [
     "CalibrationResult",
@@ -167,7 +168,9 @@ class Measurements:
         )
         if self.case is not None:
             frame.insert(0, "case", self.case)
-        return frame
+        # each row in the unit of its quantity (K for the temperatures)
+        units = {"value": "@quantity", "uncertainty": "@quantity"}
+        return with_units(frame, "studies.calibration.data", units)
 
 
 _ALIASES = {
@@ -385,7 +388,7 @@ class CalibrationResult:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per parameter: start, fitted value, standard error, 95 % interval, unit."""
-        return pd.DataFrame(
+        frame = pd.DataFrame(
             {
                 "parameter": [p.path for p in self.params],
                 "start": [p.x0 for p in self.params],
@@ -397,6 +400,8 @@ class CalibrationResult:
                 "at_bound": list(self.at_bound) or [False] * len(self.params),
             }
         )
+        cols = ["start", "value", "stderr", "ci95_low", "ci95_high"]
+        return with_units(frame, "studies.calibration", dict.fromkeys(cols, "@unit"))
 
     def summary(self) -> dict:
         """Scalars and tables as plain data (JSON-ready)."""

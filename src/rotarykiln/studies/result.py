@@ -18,11 +18,55 @@ from rotarykiln.studies.io import (
     write_parquet_atomic,
 )
 from rotarykiln.studies.paths import get_path
+from rotarykiln.tables import with_units
 
-__all__ = ["SweepResult", "SI_SUFFIX"]
+__all__ = ["SweepResult", "SI_SUFFIX", "sweep_units"]
 
 #: Suffix of the column holding the SI value of a swept path.
 SI_SUFFIX = " [SI]"
+
+
+def profile_unit(quantity: str) -> str:
+    """Unit of a profile output ``<quantity>@<z>`` (``bed_temperature`` -> ``"K"``)."""
+    return "K" if quantity.endswith("temperature") else ""
+
+
+def sweep_units(frame: pd.DataFrame, parameters: Sequence[str]) -> dict[str, str]:
+    """Units of the columns of a sweep table that do not end in their unit.
+
+    A swept path holds values as given (``""``); its ``<path> [SI]`` column the SI unit of the
+    first value with a unit (``""`` when the values are bare numbers or labels); a profile
+    output ``<quantity>@<z>`` the unit of the quantity.
+
+    Examples
+    --------
+    >>> f = pd.DataFrame({"bed.speed": ["1 rpm"], "bed.speed [SI]": [0.1], "fill": [0.1]})
+    >>> sweep_units(f, ["bed.speed"])
+    {'bed.speed': '', 'bed.speed [SI]': 'rad/s'}
+    """
+    units: dict[str, str] = {}
+    for p in parameters:
+        units[p] = ""
+        units[p + SI_SUFFIX] = _si_unit(frame[p]) if p in frame else ""
+    for c in frame.columns:
+        q, sep, _ = str(c).rpartition("@")
+        if sep and q:
+            units[str(c)] = profile_unit(q)
+    return units
+
+
+def _si_unit(values) -> str:
+    from rotarykiln.units import ureg
+
+    for v in values:
+        if not isinstance(v, str):
+            continue
+        try:
+            q = ureg.Quantity(v.strip()).to_base_units()
+        except Exception:
+            continue
+        return format(q.units, "~").replace(" ", "").replace("**", "") or "1"
+    return ""
 
 
 @dataclass(frozen=True)
@@ -117,7 +161,9 @@ class SweepResult:
 
     # ---------------------------------------------------------------------------------------
     def to_frame(self) -> pd.DataFrame:
-        return self.frame.copy()
+        """The table (a copy) with its units in ``attrs`` (see :func:`sweep_units`)."""
+        frame = self.frame.copy()
+        return with_units(frame, "studies.sweep", sweep_units(frame, self.parameters))
 
     @property
     def n_failed(self) -> int:

@@ -22,6 +22,7 @@ from rotarykiln.studies.design import Param, as_params, cases_from_unit
 from rotarykiln.studies.io import save_figure_atomic
 from rotarykiln.studies.result import SweepResult
 from rotarykiln.studies.runner import run_sweep
+from rotarykiln.tables import split_unit, with_units
 
 __all__ = ["SensitivityResult", "sobol_indices", "morris_indices", "METHODS"]
 
@@ -54,8 +55,13 @@ class SensitivityResult:
     sweep: SweepResult = field(repr=False)
 
     def to_frame(self) -> pd.DataFrame:
-        """The indices table (a copy), parameters as a column."""
-        return self.indices.reset_index(names="parameter")
+        """The indices table (a copy), parameters as a column.
+
+        Sobol indices are dimensionless; Morris' are in the unit of the output."""
+        frame = self.indices.reset_index(names="parameter")
+        unit = split_unit(self.output)[1] if self.method == "morris" else "1"
+        units = dict.fromkeys(frame.columns[1:], unit)
+        return with_units(frame, f"studies.sensitivity.{self.method}", units)
 
     def ranking(self) -> list[str]:
         """Parameters from the most to the least influential (ST, or mu_star for Morris)."""

@@ -26,8 +26,9 @@ from rotarykiln.studies.design import (
 )
 from rotarykiln.studies.io import save_figure_atomic
 from rotarykiln.studies.models import profile_columns
-from rotarykiln.studies.result import SweepResult
+from rotarykiln.studies.result import SweepResult, profile_unit
 from rotarykiln.studies.runner import run_sweep
+from rotarykiln.tables import with_units
 
 __all__ = ["UncertaintyResult", "propagate"]
 
@@ -57,7 +58,7 @@ class UncertaintyResult:
     @property
     def samples(self) -> pd.DataFrame:
         """The sample rows that ran (failed ones excluded; see :attr:`n_failed`)."""
-        f = self.sweep.frame
+        f = self.sweep.to_frame()
         return f[(f["group"] != "nominal") & (f["error"] == "")]
 
     @property
@@ -92,7 +93,9 @@ class UncertaintyResult:
                 {"output": o, "nominal": float(nom), "mean": y.mean(), "sd": y.std(ddof=1)}
                 | dict(zip(self._pcols(), pct, strict=True))
             )
-        return pd.DataFrame(rows)
+        # one row per output: each row in the unit of its output (the suffix of ``output``)
+        cols = ["nominal", "mean", "sd", *self._pcols()]
+        return with_units(pd.DataFrame(rows), "studies.uncertainty", dict.fromkeys(cols, "@output"))
 
     def bands(self, quantity: str) -> pd.DataFrame:
         """Band of one profile: ``z_m``, ``nominal``, the percentiles (same unit as the output)."""
@@ -107,12 +110,18 @@ class UncertaintyResult:
         pct = np.nanpercentile(values, self.percentiles, axis=0)
         out = {"z_m": z, "nominal": [float(self.nominal.get(c, np.nan)) for c in names]}
         out |= {name: pct[i] for i, name in enumerate(self._pcols())}
-        return pd.DataFrame(out)
+        unit = profile_unit(quantity)
+        cols = ["nominal", *self._pcols()]
+        return with_units(pd.DataFrame(out), "studies.uncertainty", dict.fromkeys(cols, unit))
 
     def to_frame(self) -> pd.DataFrame:
         """All profile bands in one long table (column ``quantity``)."""
         frames = [self.bands(q).assign(quantity=q) for q in self.quantities]
-        return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
+        frame = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
+        units = {profile_unit(q) for q in self.quantities}
+        unit = units.pop() if len(units) == 1 else "@quantity"  # else: the unit of each row's
+        cols = ["nominal", *self._pcols()]
+        return with_units(frame, "studies.uncertainty", dict.fromkeys(cols, unit))
 
     def plot(self, quantities: Sequence[str] | None = None, ax=None):
         """Bands (shaded p5-p95, dashed median) around the nominal profiles; returns the Figure."""

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotarykiln.tables import with_units
 from rotarykiln.transport.saeman import (
     mctait_flow_dimensionless,
     mctait_residence_time_dimensionless,
@@ -56,7 +57,7 @@ class DesignChart:
         }
         if self.mass_flow is not None:
             d["mass_flow_kg_s"] = self.mass_flow
-        return pd.DataFrame(d)
+        return with_units(pd.DataFrame(d), "transport.design_chart")
 
     def plot(self, ax=None):
         """Two panels: dimensionless groups, and residence time with its spread. Returns Figure."""

@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from rotarykiln.tables import with_units
+
 __all__ = ["BedProfile", "REGIONS"]
 
 #: region codes used in :attr:`BedProfile.region`
@@ -119,7 +121,7 @@ class BedProfile:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per axial point."""
-        return pd.DataFrame(
+        frame = pd.DataFrame(
             {
                 "z_m": self.z,
                 "x_from_discharge_m": self.length - self.z,
@@ -132,12 +134,13 @@ class BedProfile:
                 "region": np.asarray(REGIONS, dtype=object)[self.region],
             }
         )
+        return with_units(frame, f"transport.{self.model}")
 
     def plot(self, ax=None):
         """Draw the bed to scale along the drum (feed end left), with dams and weirs.
 
         Limiting-filling (uniform) regions are shaded green, pools behind dams blue.
-        Returns the matplotlib Axes.
+        Returns the matplotlib Figure.
         """
         import matplotlib.pyplot as plt
 
@@ -179,4 +182,4 @@ class BedProfile:
         ax.set_ylabel("height (m)")
         ax.set_title(f"{self.model}: mean fill {100 * self.mean_fill:.2f} %", fontsize=9)
         ax.legend(loc="upper right", fontsize=7)
-        return ax
+        return ax.figure

@@ -22,6 +22,7 @@ import pandas as pd
 
 from rotarykiln.errors import InputError, check_positive, check_range
 from rotarykiln.geometry import chord_from_half_angle, half_angle_from_fill
+from rotarykiln.tables import with_units
 
 __all__ = [
     "ActiveLayer",
@@ -408,37 +409,40 @@ class ActiveLayer:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per operating point."""
-        cols = [
-            "radius",
-            "omega",
-            "fill",
-            "x_al",
-            "bed_area",
-            "active_area",
-            "stagnant_area",
-            "stagnant_velocity",
-            "active_velocity",
-            "stagnant_time",
-            "revolution_period",
-        ]
-        data = {c: np.atleast_1d(np.asarray(getattr(self, c), dtype=float)) for c in cols}
+        cols = {
+            "radius": "radius_m",
+            "omega": "omega_rad_s",
+            "fill": "fill",
+            "x_al": "x_al",
+            "bed_area": "bed_area_m2",
+            "active_area": "active_area_m2",
+            "stagnant_area": "stagnant_area_m2",
+            "stagnant_velocity": "stagnant_velocity_m_s",
+            "active_velocity": "active_velocity_m_s",
+            "stagnant_time": "stagnant_time_s",
+            "revolution_period": "revolution_period_s",
+        }
+        data = {
+            c: np.atleast_1d(np.asarray(getattr(self, a), dtype=float)) for a, c in cols.items()
+        }
         n = max(len(v) for v in data.values())
-        return pd.DataFrame({c: np.broadcast_to(v, (n,)) for c, v in data.items()})
+        frame = pd.DataFrame({c: np.broadcast_to(v, (n,)) for c, v in data.items()})
+        return with_units(frame, "transverse.active_layer")
 
     def plot(self, ax=None):
-        """Bar chart of active and stagnant areas per operating point; returns the Axes."""
+        """Bar chart of active and stagnant areas per operating point; returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
             _, ax = plt.subplots()
         df = self.to_frame()
         idx = np.arange(len(df))
-        ax.bar(idx, df["stagnant_area"], label="stagnant layer")
-        ax.bar(idx, df["active_area"], bottom=df["stagnant_area"], label="active layer")
+        ax.bar(idx, df["stagnant_area_m2"], label="stagnant layer")
+        ax.bar(idx, df["active_area_m2"], bottom=df["stagnant_area_m2"], label="active layer")
         ax.set_xlabel("operating point")
-        ax.set_ylabel("area [m$^2$]")
+        ax.set_ylabel("area (m$^2$)")
         ax.legend()
-        return ax
+        return ax.figure
 
 
 def active_layer(radius, omega, fill, *, convention: str = "tables") -> ActiveLayer:

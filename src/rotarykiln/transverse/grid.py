@@ -28,12 +28,15 @@ the new temperature (never lowered). Totals are checked every step.
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import ConvergenceError, InputError, check_nonnegative, check_positive
+from rotarykiln.progress import progress_bar
+from rotarykiln.tables import with_units
 from rotarykiln.transverse.grid_geometry import GridGeometry
 from rotarykiln.transverse.heating import cell_heat_exchange
 from rotarykiln.transverse.mixing import (
@@ -48,6 +51,8 @@ from rotarykiln.transverse.pyrolysis import Thermochemistry
 from rotarykiln.transverse.segregation import segregation_coefficients
 
 __all__ = ["GridMaterial", "GridResult", "HeatingOptions", "simulate_grid"]
+
+log = logging.getLogger(__name__)
 
 _MASS_TOL = 1e-12
 
@@ -110,6 +115,7 @@ class GridResult:
     energy_error: float
     time_step: float
     snapshots: dict = field(default_factory=dict)
+    name: str = ""  # the case, for titles
 
     @property
     def mixing_time(self) -> float:
@@ -144,7 +150,7 @@ class GridResult:
         )
         for j in range(self.layer_sizes.shape[1]):
             df[f"layer{j + 1}_size_m"] = self.layer_sizes[:, j]
-        return df
+        return with_units(df, "transverse.grid")
 
     def plot(self, ax=None):
         """Extent of mixing, mean temperature of the second material and volatiles against t."""
@@ -346,6 +352,15 @@ def simulate_grid(
 
     record(0, 0.0)
     r = 1
+    log.info(
+        "transverse grid: %d active and %d stagnant CVs, %d steps of %.3g s (%.3g s simulated)",
+        n_act,
+        stag.shape[0] * stag.shape[1],
+        n_steps,
+        tau,
+        duration,
+    )
+    bar = progress_bar(n_steps * tau, desc="transverse grid", unit="s")
     for step in range(1, n_steps + 1):
         # 1. active-layer transport with segregation routing
         out = act * phi[:, None]
@@ -380,8 +395,10 @@ def simulate_grid(
         err = float(np.max(np.abs(tot[iv:ie] - total0[iv:ie]) / scale0[iv:ie]))
         mass_err = max(mass_err, err)
         if err > _MASS_TOL:
+            bar.close()
             raise ConvergenceError("grid mass balance violated", step=step, relative_error=err)
         if sub == 0:
+            bar.update(tau * n_sub)
             # stagnant shift: the last zone leaves, the entry accumulator becomes zone 0
             last = (n_zon - 1 + head) % n_zon
             exit_rem[:] = stag[:, last]
@@ -413,7 +430,9 @@ def simulate_grid(
             if r < n_rec:
                 record(r, step * tau)
                 r += 1
+    bar.close()
     tot = act.sum(axis=0) + stag.sum(axis=(0, 1)) + entry.sum(axis=0) + exit_rem.sum(axis=0)
+    log.info("transverse grid: mass balance within %.2g (relative)", mass_err)
     if heating is not None:
         e0 = total0[ie:ivol].sum()
         energy_err = max(energy_err, abs(tot[ie:ivol].sum() - e0) / abs(e0))

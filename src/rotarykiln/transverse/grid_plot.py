@@ -15,35 +15,36 @@ __all__ = [
 ]
 
 _FIELDS = {
-    "extent": ("extent of mixing [-]", "Blues", (0.0, 1.0)),
-    "size": ("mean particle size [mm]", "Greens", (0.0, 6.3)),
-    "temperature": ("mean temperature [K]", "Reds", None),
-    "share": ("share of second material [-]", "Oranges", (0.0, 1.0)),
+    "extent": ("extent of mixing (-)", "Blues", (0.0, 1.0)),
+    "size": ("mean particle size (mm)", "Greens", (0.0, 6.3)),
+    "temperature": ("mean temperature (K)", "Reds", None),
+    "share": ("share of second material (-)", "Oranges", (0.0, 1.0)),
 }
 
 
 def plot_time_series(result, ax=None):
     """Extent of mixing, mean temperatures and volatile evolution against time.
 
-    Returns the Figure (three stacked Axes) or, with ``ax``, the extent of mixing on that Axes.
+    Returns the Figure (three stacked Axes; with ``ax``, the extent of mixing on that Axes).
     """
     import matplotlib.pyplot as plt
 
     if ax is not None:
         ax.plot(result.t, 100 * result.extent)
-        ax.set_xlabel("time [s]")
-        ax.set_ylabel("extent of mixing [% of maximum]")
-        return ax
+        ax.set_xlabel("time (s)")
+        ax.set_ylabel("extent of mixing (% of maximum)")
+        return ax.figure
     fig, axes = plt.subplots(3, 1, sharex=True, figsize=(6, 7))
     axes[0].plot(result.t, 100 * result.extent)
-    axes[0].set_ylabel("extent of mixing\n[% of max]")
+    axes[0].set_ylabel("extent of mixing\n(% of max)")
     for i, name in enumerate(result.names):
         axes[1].plot(result.t, result.temperature[:, i], label=f"mean {name}")
-    axes[1].set_ylabel("temperature [K]")
+    axes[1].set_ylabel("temperature (K)")
     axes[1].legend()
     axes[2].plot(result.t, 100 * result.volatiles)
-    axes[2].set_ylabel(f"volatiles\n[% of {result.names[1]} feed]")
-    axes[2].set_xlabel("time [s]")
+    axes[2].set_ylabel(f"volatiles\n(% of {result.names[1]} feed)")
+    axes[2].set_xlabel("time (s)")
+    _name_case(fig, result)
     fig.tight_layout()
     return fig
 
@@ -58,10 +59,21 @@ def plot_layer_sizes(result, ax=None):
         ax.plot(result.t, 1e3 * result.layer_sizes[:, j], label=f"layer {j + 1}")
     ax.plot(result.t, 1e3 * result.inner_size, "k--", label="inner")
     ax.plot(result.t, 1e3 * result.outer_size, "k:", label="outer")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("mean particle size [mm]")
-    ax.legend(fontsize="small", ncol=2)
-    return ax
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("mean particle size (mm)")
+    ax.legend(
+        fontsize="small", ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.13), frameon=False
+    )
+    _name_case(ax.figure, result)
+    ax.figure.tight_layout()
+    return ax.figure
+
+
+def _name_case(fig, result) -> None:
+    """Title the figure with the case's name (when the result has one and no title is set)."""
+    name = getattr(result, "name", "")
+    if name and not fig.get_suptitle():
+        fig.suptitle(name, fontsize="medium")
 
 
 def raster_cells(geom, n: int = 160):
@@ -109,7 +121,7 @@ def raster_cells(geom, n: int = 160):
 
 
 def plot_colour_map(result, time: float, field: str = "extent", ax=None, n: int = 160):
-    """Colour map of one CV field of the snapshot nearest to ``time``; returns the Axes."""
+    """Colour map of one CV field of the snapshot nearest to ``time``; returns the Figure."""
     import matplotlib.pyplot as plt
 
     if not result.snapshots:
@@ -138,7 +150,8 @@ def plot_colour_map(result, time: float, field: str = "extent", ax=None, n: int 
     ax.set_axis_off()
     ax.set_title(f"t = {snap['t']:.1f} s")
     ax.figure.colorbar(im, ax=ax, label=label, shrink=0.8)
-    return ax
+    _name_case(ax.figure, result)
+    return ax.figure
 
 
 def animate_grid(result, path, field: str = "extent", fps: int = 4) -> bool:

@@ -32,6 +32,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import InputError, OutOfRangeWarning, check_nonnegative, check_positive
+from rotarykiln.tables import with_units
 
 __all__ = [
     "D_LIMIT_FINAL",
@@ -360,19 +361,21 @@ class MixingResult:
 
     def to_frame(self) -> pd.DataFrame:
         """Time series of the contact distance."""
-        return pd.DataFrame({"t_s": self.t, "contact_m": self.contact})
+        return with_units(
+            pd.DataFrame({"t_s": self.t, "contact_m": self.contact}), "transverse.mixing"
+        )
 
     def plot(self, ax=None):
-        """Contact distance against time; returns the Axes."""
+        """Contact distance against time; returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
             _, ax = plt.subplots()
         ax.plot(self.t, self.contact)
         ax.axhline(self.final_contact, ls=":", c="k")
-        ax.set_xlabel("time [s]")
-        ax.set_ylabel("contact distance [m]")
-        return ax
+        ax.set_xlabel("time (s)")
+        ax.set_ylabel("contact distance (m)")
+        return ax.figure
 
 
 def vanpuyvelde_mixing(

@@ -13,6 +13,7 @@ two sizes are equal are taken as single-size feeds.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -208,7 +209,7 @@ def run_retort(spec: RetortSpec) -> GridResult:
         berkovich_shale(spec.shale_cp),
     )
     geom = build_grid(radius, spec.omega, spec.fill, layers=spec.layers, zones=spec.zones)
-    return simulate_grid(
+    result = simulate_grid(
         geom,
         sizes,
         (ash, shale),
@@ -218,3 +219,4 @@ def run_retort(spec: RetortSpec) -> GridResult:
         heating=HeatingOptions(emissivity=spec.emissivity, balance=spec.balance),
         snapshot_times=spec.snapshot_times,
     )
+    return dataclasses.replace(result, name=spec.name)

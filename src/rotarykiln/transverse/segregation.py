@@ -30,6 +30,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
+from rotarykiln.tables import with_units
 
 __all__ = [
     "COEFFICIENT_SETS",
@@ -189,7 +190,7 @@ class LayerSizes:
 
     def to_frame(self) -> pd.DataFrame:
         """Volume fraction of each size class in feed, inner and outer layer."""
-        return pd.DataFrame(
+        frame = pd.DataFrame(
             {
                 "size_m": self.sizes,
                 "feed": self.feed_fractions,
@@ -197,9 +198,10 @@ class LayerSizes:
                 "outer": self.outer_fractions,
             }
         )
+        return with_units(frame, "transverse.segregation")
 
     def plot(self, ax=None):
-        """Size distributions of feed and layers; returns the Axes."""
+        """Size distributions of feed and layers; returns the Figure."""
         import matplotlib.pyplot as plt
 
         if ax is None:
@@ -214,10 +216,10 @@ class LayerSizes:
         ):
             ax.bar(x + (k - 1) * 0.27, frac, width=0.27, label=name)
         ax.set_xticks(x, [f"{1e3 * s:.2f}" for s in self.sizes])
-        ax.set_xlabel("size class [mm]")
+        ax.set_xlabel("size class (mm)")
         ax.set_ylabel("volume fraction")
         ax.legend()
-        return ax
+        return ax.figure
 
 
 def vanpuyvelde_layer_mean_sizes(sizes, fractions, v_al, *, coefficients="backfit") -> LayerSizes:
