@@ -8,8 +8,6 @@ map and the outlets against time; with a tracer pulse, its RTD in the summary.
 
 from __future__ import annotations
 
-import sys
-
 from rotarykiln.commands._args import out_dir, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.units import to_si
@@ -58,7 +56,7 @@ def run(args) -> int:
     data = read_transient_file(args.events) if args.events else {}
     transient = parse_transient(data, kiln, until)
     out = out_dir(args.out, f"{case.name}-transient".replace(" ", "_"))
-    progress = not args.no_progress and sys.stderr.isatty()
+    progress = False if args.no_progress else None  # None: a terminal or $ROTARYKILN_PROGRESS
     sol = simulate(kiln, cells, transient, until, progress=progress)
     summary = sol.write(out, plots=not args.no_plots)
     if transient.tracer is not None:

@@ -385,7 +385,7 @@ def simulate(
     *,
     rtol: float = 1e-6,
     newton_tol: float | None = None,
-    progress: bool = False,
+    progress: bool | None = False,
     steady=None,
     times=None,
 ) -> TransientSolution:
@@ -407,8 +407,10 @@ def simulate(
     newton_tol : float, optional
         Tolerance of the BDF Newton iteration (scaled; scipy's default sqrt(rtol)): lower
         it to close the energy balance tighter.
-    progress : bool
-        A tqdm progress bar over simulated time.
+    progress : bool or None
+        A tqdm progress bar over simulated time, on stderr (None: when
+        ``$ROTARYKILN_PROGRESS`` asks or stderr is a terminal;
+        :func:`rotarykiln.progress.progress_enabled`).
     steady : KilnSolution, optional
         The steady solution of the case (on the same cells and refined lining) to start from.
     times : array, optional
@@ -459,11 +461,11 @@ def simulate(
     atol[tk.n * tk.m :] = rtol * acc_scale
     S = tk.sparsity()
     run = _Run()
-    bar = None
-    if progress:
-        from tqdm import tqdm
+    from rotarykiln.progress import progress_bar, progress_enabled
 
-        bar = tqdm(total=float(until), unit="s", desc="transient", leave=False)
+    bar = None
+    if progress_enabled(progress):
+        bar = progress_bar(float(until), desc="transient", unit="s", enabled=True)
     states, stamp = [], []
     started = _time.perf_counter()
     try:

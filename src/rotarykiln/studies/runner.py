@@ -302,8 +302,9 @@ def _dask_rows(func, base, chunks, create, scheduler, workers, timeout) -> Itera
 # --- progress ---------------------------------------------------------------------------------
 class _Progress:
     def __init__(self, total: int, done: int, failed: int, enabled: bool | None, desc: str):
-        if enabled is None:
-            enabled = sys.stderr.isatty()
+        from rotarykiln.progress import progress_enabled
+
+        enabled = progress_enabled(enabled)  # None: $ROTARYKILN_PROGRESS, else a tty
         self.bar = None
         self.failed = failed
         self.total = total
