@@ -73,6 +73,12 @@ def test_zone_beyond_the_kiln_or_without_lining():
         dataclasses.replace(kiln, heaters=(HeaterZone(1.0, 3.0, power=10.0),))
     with pytest.raises(InputError, match="heaters.*lining"):
         dataclasses.replace(kiln, layers=(), heaters=(HeaterZone(1.0, 2.0, power=10.0),))
+    with pytest.raises(InputError, match="heaters.*do not overlap"):
+        dataclasses.replace(
+            kiln, heaters=(HeaterZone(1.0, 2.0, power=10.0), HeaterZone(0.5, 1.5, power=5.0))
+        )
+    touching = (HeaterZone(0.0, 1.0, power=10.0), HeaterZone(1.0, 2.0, power=5.0))
+    assert dataclasses.replace(kiln, heaters=touching).heaters == touching
 
 
 def test_heaters_from_a_case_file():

@@ -243,6 +243,14 @@ class Kiln:
                     f"{zone.end:.6g} m",
                     f"<= the kiln length ({self.length:.6g} m)",
                 )
+        zones = sorted(self.heaters, key=lambda z: z.start)
+        for a, b in zip(zones, zones[1:], strict=False):
+            if b.start < a.end - 1e-9:
+                raise InputError(
+                    "wall.heaters",
+                    f"[{a.start:.6g} m, {a.end:.6g} m] and [{b.start:.6g} m, {b.end:.6g} m]",
+                    "zones that do not overlap (one may end where the next starts)",
+                )
         if (
             self.heat_release == 0.0
             and not self.mechanism.reactions
