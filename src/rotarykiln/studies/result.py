@@ -18,12 +18,18 @@ from rotarykiln.studies.io import (
     write_parquet_atomic,
 )
 from rotarykiln.studies.paths import get_path
-from rotarykiln.tables import with_units
+from rotarykiln.tables import split_unit, with_units
 
 __all__ = ["SweepResult", "SI_SUFFIX", "sweep_units"]
 
 #: Suffix of the column holding the SI value of a swept path.
 SI_SUFFIX = " [SI]"
+
+#: Outputs drawn by :meth:`SweepResult.plot` when none are named.
+PLOT_OUTPUTS = 8
+
+# the solver's bookkeeping, not drawn by default (last word of the output's name)
+_BOOKKEEPING = {"iterations", "residual", "cells", "relative"}
 
 
 def profile_unit(quantity: str) -> str:
@@ -209,11 +215,13 @@ class SweepResult:
 
         One column of panels per parameter, one row per output. For one-at-a-time designs each
         panel shows the cases of that parameter plus the base case; for grids with several
-        parameters, one line per combination of the other parameters.
+        parameters, one line per combination of the other parameters. By default the scalar
+        outputs that change across the cases (at most :data:`PLOT_OUTPUTS`; not the profiles
+        ``<quantity>@<z>`` nor the solver's bookkeeping); axes labelled "name (unit)".
         """
         import matplotlib.pyplot as plt
 
-        outs = list(outputs or self.outputs)
+        outs = list(outputs) if outputs else self._varying_outputs()
         pars = list(parameters or self.parameters)
         for o in outs:
             if o not in self.outputs:
@@ -221,10 +229,11 @@ class SweepResult:
         for p in pars:
             if p not in self.parameters:
                 raise InputError("plot.parameters", p, f"one of {', '.join(self.parameters)}")
+        units = sweep_units(self.frame, self.parameters)
         fig, axes = plt.subplots(
-            len(outs),
+            max(len(outs), 1),
             len(pars),
-            figsize=(3.2 * len(pars) + 0.8, 2.6 * len(outs) + 0.6),
+            figsize=(3.6 * len(pars) + 1.0, 2.4 * max(len(outs), 1) + 0.8),
             squeeze=False,
         )
         ok = self.frame[self.frame["error"] == ""]
@@ -250,13 +259,30 @@ class SweepResult:
                         pd.to_numeric(base[o], errors="coerce").iloc[0], color="grey", ls=":", lw=1
                     )
                 if i == len(outs) - 1:
-                    ax.set_xlabel(f"{p} [SI]")
-                if j == 0:
-                    ax.set_ylabel(o)
+                    unit = units.get(p + SI_SUFFIX) or "SI"
+                    ax.set_xlabel(f"{p} ({unit})")
+                name, unit = split_unit(o)
+                ax.set_ylabel(f"{name} ({unit})" if unit else name, fontsize="small")
                 if len(groups) > 1 and i == 0:
                     ax.legend(fontsize="x-small")
-        fig.tight_layout()
+        n_ok = len(ok)
+        fig.suptitle(f"sweep of {', '.join(pars)}: {n_ok} case{'s' * (n_ok != 1)}")
+        fig.tight_layout(rect=(0, 0, 1, 1 - 0.4 / fig.get_figheight()))  # room for the title
         return fig
+
+    def _varying_outputs(self) -> list[str]:
+        """Scalar outputs that change across the cases that ran, in table order (at most
+        :data:`PLOT_OUTPUTS`)."""
+        ok = self.frame[self.frame["error"] == ""]
+        out = []
+        for o in self.outputs:
+            if "@" in o or o.rsplit("_", 1)[-1] in _BOOKKEEPING or "closure" in o:
+                continue
+            y = pd.to_numeric(ok[o], errors="coerce").to_numpy(float)
+            y = y[np.isfinite(y)]
+            if len(y) > 1 and np.ptp(y) > 1e-9 * max(np.abs(y).max(), 1e-300):
+                out.append(o)
+        return out[:PLOT_OUTPUTS] or [o for o in self.outputs if "@" not in o][:1]
 
     def save_plot(self, path, **kwargs) -> Path:
         """Save :meth:`plot` atomically to ``path`` (PNG by suffix); returns the path."""
