@@ -80,7 +80,7 @@ def _fit_figure(fit):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
     fit.plot(a1)
     mask = fit.data > 0.05 * fit.data.max()
-    parity_plot(fit.data[mask] * 60, fit.fitted[mask] * 60, a2, quantity="E(t) [1/min]")
+    parity_plot(fit.data[mask] * 60, fit.fitted[mask] * 60, a2, quantity="E(t) (1/min)")
     fig.tight_layout()
     return fig
 

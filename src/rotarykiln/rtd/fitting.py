@@ -303,7 +303,9 @@ class FitResult(_ModelParameters):
             )
         ax.set_xlabel("t (min)" if minutes else "t (s)")
         ax.set_ylabel("E(t) (1/min)" if minutes else "E(t) (1/s)")
-        ax.legend(fontsize="small", loc="upper right")
+        ax.legend(
+            fontsize="small", ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.15), frameon=False
+        )
         return ax.figure
 
 

@@ -79,20 +79,21 @@ class SensitivityResult:
         else:
             fig = ax.figure
         y = np.arange(len(order))
+        name, unit = split_unit(self.output)
         if self.method == "sobol":
             h = 0.38
             ax.barh(y + h / 2, df["ST"], h, xerr=df["ST_conf"], label="total $S_T$", color="C0")
             ax.barh(
                 y - h / 2, df["S1"], h, xerr=df["S1_conf"], label="first order $S_1$", color="C1"
             )
-            ax.set_xlabel(f"Sobol index of {self.output} (-)")
+            ax.set_xlabel(f"Sobol index of {name} (-)")
             ax.axvline(0, color="k", lw=0.6)
         else:
             ax.barh(y, df["mu_star"], 0.6, xerr=df["mu_star_conf"], label=r"$\mu^*$", color="C0")
             ax.plot(df["sigma"], y, "kD", ms=5, label=r"$\sigma$")
-            ax.set_xlabel(f"Morris elementary effect on {self.output}")
+            ax.set_xlabel(f"Morris elementary effect on {name}" + (f" ({unit})" if unit else ""))
         ax.set_yticks(y, order)
-        ax.legend(loc="lower right", fontsize="small")
+        ax.legend(fontsize="small", loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
         ax.set_title(
             f"{self.method.capitalize()} sensitivity, {len(self.sweep.frame)} cases",
             fontsize="medium",

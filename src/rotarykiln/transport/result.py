@@ -181,5 +181,5 @@ class BedProfile:
         ax.set_xlabel("distance from feed end z (m)")
         ax.set_ylabel("height (m)")
         ax.set_title(f"{self.model}: mean fill {100 * self.mean_fill:.2f} %", fontsize=9)
-        ax.legend(loc="upper right", fontsize=7)
+        ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
         return ax.figure
