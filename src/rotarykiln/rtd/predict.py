@@ -265,6 +265,8 @@ def run_section(case, out, *, transport: Callable | None = None) -> dict:
     pred = predict_from_case(case, transport=transport)
     fig, ax = plt.subplots(figsize=(6, 4))
     pred.plot(ax)
+    ax.set_title(f"{case.name}: predicted RTD", fontsize="medium")
+    fig.tight_layout()
     write_frame_atomic(out / "rtd_prediction.csv", pred.to_frame())
     save_figure_atomic(out / "rtd_prediction.png", fig)
     plt.close(fig)
