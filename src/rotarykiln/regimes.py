@@ -425,5 +425,7 @@ def plot_regime_map(fill=None, froude=None, *, bands: MellmannBands | None = Non
     ax.set_xlabel("fill fraction f (-)")
     ax.set_ylabel(r"Froude number $Fr = \omega^2 R/g$ (-)")
     ax.set_title("Transverse bed regimes (Mellmann 2001 bands)")
-    ax.legend(loc="lower right", fontsize=8, framealpha=0.9)
+    ax.legend(
+        loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8, frameon=False
+    )  # hides no point
     return ax.figure
