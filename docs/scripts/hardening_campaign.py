@@ -208,6 +208,11 @@ def _envelope_one(task):
         row["problems"] = problems
         row["t_bed_out_K"] = float(sol.bed_outlet_temperature)
         row["zigzag_K"] = float(np.max(np.abs(np.diff(sol.t_bed, 2)))) if sol.t_bed.size > 2 else 0
+        # cell-to-cell oscillation: successive steps of the bed temperature of opposite signs,
+        # both over 5 K (a smooth profile has a few turning points at most)
+        d = np.diff(sol.t_bed)
+        flips = (d[:-1] * d[1:] < 0) & (np.minimum(abs(d[:-1]), abs(d[1:])) > 5.0)
+        row["flips"] = int(flips.sum())
     except ConvergenceError as exc:
         row["outcome"], row["message"] = "convergence_error", str(exc)[:300]
     except InputError as exc:
@@ -276,14 +281,18 @@ def _campaign(func, tasks, workers, kind) -> dict:
         for r in rows
         if r["outcome"] not in ("refused", "converged", "convergence_error", "unwritable")
     ][:50]
+    result["convergence_errors"] = [r for r in rows if r["outcome"] == "convergence_error"]
     if kind == "envelope":
-        result["convergence_errors"] = [r for r in rows if r["outcome"] == "convergence_error"]
         result["per_case"] = {}
         for r in rows:
             c = result["per_case"].setdefault(r["case"], {})
             c[r["outcome"]] = c.get(r["outcome"], 0) + 1
-        zig = [r.get("zigzag_K", 0) for r in rows if "zigzag_K" in r]
-        result["max_second_difference_of_t_bed_K"] = round(max(zig), 2) if zig else None
+        for r in rows:
+            if "zigzag_K" in r:
+                c = result["per_case"][r["case"]]
+                c["max_d2T_bed_K"] = round(max(c.get("max_d2T_bed_K", 0), r["zigzag_K"]), 1)
+                c["max_flips"] = max(c.get("max_flips", 0), r["flips"])
+        result["oscillating"] = [r for r in rows if r.get("flips", 0) > 2]
         conv = counts.get("converged", 0)
         result["converged_percent"] = round(100 * conv / max(len(rows), 1), 2)
     return result
