@@ -158,3 +158,25 @@ def test_summary_paths_name_the_output_folder_not_the_staging(tmp_path):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["transport_profile_csv"] == str(out / "profile.csv")
     assert STAGING not in (out / "summary.txt").read_text()
+
+
+def test_an_older_cut_commit_goes_in_before_a_newer_run_commits(folder, monkeypatch):
+    class Killed(BaseException):
+        pass
+
+    real_roll, real_rmtree = outputs._roll_forward, outputs.shutil.rmtree
+
+    def cut(staging, target):
+        os.replace(staging / "files" / "old_a.txt", target / "old_a.txt")
+        raise Killed
+
+    with output_set(folder) as newer:  # run B starts ...
+        _write(newer, ["b.txt"])
+        monkeypatch.setattr(outputs, "_roll_forward", cut)
+        monkeypatch.setattr(outputs.shutil, "rmtree", lambda *a, **k: None)
+        with pytest.raises(Killed), output_set(folder) as older:  # ... run A commits, is killed
+            _write(older, ["old_a.txt", "old_b.txt"])
+        monkeypatch.setattr(outputs, "_roll_forward", real_roll)
+        monkeypatch.setattr(outputs.shutil, "rmtree", real_rmtree)
+    assert _names(folder) == ["b.txt", "mine.txt", MANIFEST]  # B's set, A's completed first
+    assert _stagings(folder.parent) == []

@@ -360,6 +360,7 @@ def output_set(path: str | os.PathLike, field: str = "--out"):
             if q.is_file() and q.name[0] != "." and q.name != MANIFEST
         )
         with _locked(folder):
+            _recover(folder, base)  # an older commit cut by SIGKILL meanwhile goes in first
             previous = _manifest_names(folder)
             write_json_atomic(files / MANIFEST, {"files": names})
             journal = {
