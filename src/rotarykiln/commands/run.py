@@ -52,7 +52,9 @@ def register(sub) -> None:
         help="validate a case file and run it",
         description="Validate a case file (YAML with units) and run every model its sections "
         "switch on (transport, the kiln model, rtd); write summary.json, summary.txt, tables and "
-        "figures to --out. Built-in cases: see src/rotarykiln/cases/README.md. "
+        "figures to --out, all of them or none: a failed or interrupted run leaves the folder as "
+        "it was, and a run replaces the files of the previous one (run_files.json), never the "
+        "user's. Built-in cases: see src/rotarykiln/cases/README.md. "
         "Example: rotarykiln run limestone_calcination --out lime",
     )
     p.add_argument("case", help="case file (YAML) or the name of a built-in case")
