@@ -220,11 +220,14 @@ def _check(argv, capsys):
 
 
 @pytest.mark.parametrize(("label", "argv"), CASES, ids=[c[0] for c in CASES])
-def test_bad_arguments_exit_2_with_one_line(label, argv, capsys):
+def test_bad_arguments_exit_2_with_one_line(label, argv, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # default output folders (sensitivity/, ...) land here
     _check(argv, capsys)
+    assert not any(tmp_path.iterdir()), f"a refused command wrote {list(tmp_path.iterdir())}"
 
 
-def test_files_and_out_folders(tmp_path, capsys):
+def test_files_and_out_folders(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     a_file = tmp_path / "file"
     a_file.write_text("x")
     long = str(tmp_path / ("x" * 300))

@@ -94,14 +94,16 @@ def run(args) -> int:
     base = _load_case(args.case)
     func = _load_model(args.model)
     check_param_ranges(base, params, args.model)
+    if args.method != "uncertainty" and not args.output:
+        raise InputError(
+            "--output", message=f"--output: missing (required with --method {args.method})"
+        )
+    if args.method == "morris" and (args.levels < 2 or args.levels % 2):
+        raise InputError("--levels", args.levels, "an even whole number >= 2")
     folder = out_dir(args.out, "sensitivity")
     opts = runner_options(args, folder)
     if args.method == "uncertainty":
         return _uncertainty(args, func, base, params, folder, opts)
-    if not args.output:
-        raise InputError(
-            "--output", message=f"--output: missing (required with --method {args.method})"
-        )
     if args.method == "sobol":
         res = sobol_indices(func, base, params, args.output, args.n, seed=args.seed, **opts)
     else:
