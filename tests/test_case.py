@@ -40,8 +40,9 @@ def test_good_case_is_converted_to_si():
         ("kiln.diameter", "-0.4 m", "kiln.diameter: -0.4 m is not in [1 um, 10 km]"),
         ("operation.speed", "3 m", 'operation.speed: "3 m" is a length, expected a rotation rate'),
         ("operation.speed", "-1 rpm", "operation.speed: -1 rpm is not in [1e-5 rpm, 955 rpm]"),
-        ("bed.fill", 1.0, "bed.fill: 1.0 is not in (0, 1)"),
-        ("bed.fill", "120 %", "bed.fill: 120 % is not in (0, 1)"),
+        ("bed.fill", 1.0, "bed.fill: 1.0 is not in [0.001, 1)"),
+        ("bed.fill", "120 %", "bed.fill: 120 % is not in [0.001, 1)"),
+        ("bed.fill", 1e-308, "bed.fill: 1e-308 is not in [0.001, 1)"),
         (
             "kiln.diamter",
             "0.4 m",

@@ -172,7 +172,9 @@ HeatTransferCoefficient = quantity(
 SootFraction = quantity("fraction", ge=0, le=1e-4, shown="in [0, 1e-4]")
 Slope = quantity("angle", ge=0, lt=math.radians(45), shown="in [0, 45) deg")
 ReposeAngle = quantity("angle", gt=0, lt=math.radians(90), shown="in (0, 90) deg")
-FillFraction = quantity("fraction", gt=0, lt=1, shown="in (0, 1)")
+FillFraction = quantity("fraction", ge=1e-3, lt=1, shown="in [0.001, 1)")
+"""A bed fill: below 0.1 % no kiln model has a bed to work on (a fill of 1e-308 is refused at
+load rather than failing in the solver)."""
 
 
 class Kiln(Section):
