@@ -105,10 +105,13 @@ def run_case(
             from rotarykiln.plot import cross_section_figure, regime_map_figure
 
             for name, fig in (
-                ("regime_map.png", regime_map_figure(case.bed.mean_fill, summary["froude"])),
+                (
+                    "regime_map.png",
+                    regime_map_figure(case.bed.mean_fill, summary["froude"], case.name),
+                ),
                 (
                     "cross_section.png",
-                    cross_section_figure(case.bed.mean_fill, case.kiln.diameter / 2),
+                    cross_section_figure(case.bed.mean_fill, case.kiln.diameter / 2, case.name),
                 ),
             ):
                 save_figure_atomic(out / name, fig)
