@@ -67,3 +67,21 @@ def test_a_second_run_into_the_same_folder_leaves_no_file_of_the_first(tmp_path)
     names = {p.name for p in tmp_path.iterdir()}
     assert "kiln_profiles.csv" in names and "kiln_rtd.png" not in names
     assert mine.read_text() == "keep me"
+
+
+def test_tables_are_written_with_their_units_and_version(tmp_path):
+    import json
+
+    import pandas as pd
+
+    from rotarykiln import __version__, cli
+
+    assert cli.main(["run", "tscheng_A16", "--out", str(tmp_path), "--no-plots"]) == 0
+    meta = json.loads((tmp_path / "kiln_profiles_units.json").read_text())
+    columns = list(pd.read_csv(tmp_path / "kiln_profiles.csv").columns)
+    assert meta["table"] == "kiln_profiles.csv" and list(meta["units"]) == columns
+    assert meta["units"]["T_bed_K"] == "K" and meta["units"]["z_m"] == "m"
+    assert meta["rotarykiln_version"] == __version__ and meta["model"]
+    assert (
+        "kiln_profiles_units.json" in json.loads((tmp_path / "run_files.json").read_text())["files"]
+    )

@@ -101,9 +101,24 @@ def write_json_atomic(path: str | os.PathLike, data: Any) -> Path:
 
 
 def write_frame_atomic(path: str | os.PathLike, frame: pd.DataFrame, **to_csv_kwargs) -> Path:
-    """Write a DataFrame to CSV atomically (index omitted unless asked)."""
+    """Write a DataFrame to CSV atomically (index omitted unless asked).
+
+    A frame that carries its units (``frame.attrs["units"]``, :mod:`rotarykiln.tables`) also
+    gets ``<name>_units.json`` beside it: the unit of every column, the model and the
+    rotarykiln version that wrote it (a CSV has no place for them).
+    """
     to_csv_kwargs.setdefault("index", False)
-    return atomic_path(path, lambda p: frame.to_csv(p, **to_csv_kwargs))
+    written = atomic_path(path, lambda p: frame.to_csv(p, **to_csv_kwargs))
+    units = frame.attrs.get("units")
+    if units:
+        meta = {
+            "table": written.name,
+            "units": {str(c): units.get(str(c), units.get(c, "")) for c in frame.columns},
+            "model": frame.attrs.get("model", ""),
+            "rotarykiln_version": frame.attrs.get("rotarykiln_version", ""),
+        }
+        write_json_atomic(written.with_name(written.stem + "_units.json"), meta)
+    return written
 
 
 #: False inside :func:`no_figures`: :func:`save_figure_atomic` then writes nothing.
