@@ -121,7 +121,10 @@ def test_console_entry_point_usage_error_exit_code():
             "kiln: {length: 5 m, diameter: 0.4 m}\noperation: {speed: -2 rpm}",
             "speed: -2 rpm is not in [1e-5 rpm, 955 rpm]",
         ),
-        ("kiln: {length: 5 m, diameter: 0.4 m}\nbed: {fill: 1}", "bed.fill: 1 is not in [0.001, 1)"),
+        (
+            "kiln: {length: 5 m, diameter: 0.4 m}\nbed: {fill: 1}",
+            "bed.fill: 1 is not in [0.001, 1)",
+        ),
     ],
 )
 def test_case_value_errors_through_cli(capsys, tmp_path, line, message):
