@@ -90,7 +90,8 @@ def test_cli_fit_json_and_outputs(tmp_path, capsys):
     result = json.loads(capsys.readouterr().out)
     assert result["peclet"] == pytest.approx(550.0, rel=1e-3)
     assert result["dispersion_m2_s"] == pytest.approx(1.95**2 / (550 * 2520), rel=1e-3)
-    assert {p.name for p in out.iterdir()} == {"fit.json", "fit.csv", "fit.png"}
+    names = {p.name for p in out.iterdir()}
+    assert names == {"fit.json", "fit.csv", "fit_units.json", "fit.png"}  # units beside the table
 
 
 def test_cli_fit_bad_data_writes_nothing(tmp_path, capsys):
