@@ -44,6 +44,11 @@ def test_good_case_is_converted_to_si():
         ("bed.fill", "120 %", "bed.fill: 120 % is not in [0.001, 1)"),
         ("bed.fill", 1e-308, "bed.fill: 1e-308 is not in [0.001, 1)"),
         (
+            "operation.feed_temperature",
+            "1 K",
+            "operation.feed_temperature: 1 K is not in [150 K, 10000 K]",
+        ),
+        (
             "kiln.diamter",
             "0.4 m",
             'kiln.diamter: unknown key, did you mean "diameter"? '

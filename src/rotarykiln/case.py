@@ -154,7 +154,9 @@ RotationRate = quantity(
 )
 MassFlow = quantity("mass flow", ge=0, le=1e5, shown="in [0, 1e5 kg/s]")
 VolumetricFlow = quantity("volumetric flow", ge=0, le=1e4, shown="in [0, 1e4 m3/s]")
-Temperature = quantity("temperature", ge=1.0, le=1e4, shown="in [1 K, 10000 K]")
+Temperature = quantity("temperature", ge=150.0, le=1e4, shown="in [150 K, 10000 K]")
+"""A temperature of a kiln case: no stream, wall or ambient of a kiln is colder than 150 K (the
+floor the solver evaluates properties at), none hotter than 10000 K."""
 Density = quantity("density", ge=1e-3, le=1e5, shown="in [0.001, 1e5] kg/m3")
 Time = quantity("time", ge=1e-6, le=1e10, shown="in [1 us, 1e10 s]")
 Velocity = quantity("velocity", ge=0, le=1e3, shown="in [0, 1000] m/s")
