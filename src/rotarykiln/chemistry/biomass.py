@@ -26,7 +26,6 @@ from collections.abc import Iterable, Sequence
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from rotarykiln.chemistry.mechanism import Mechanism
 from rotarykiln.chemistry.reaction import (
@@ -36,6 +35,7 @@ from rotarykiln.chemistry.reaction import (
     reaction_from_dict,
 )
 from rotarykiln.chemistry.species import SpeciesTable, default_species, load_species
+from rotarykiln.chemistry.yaml_files import read_yaml
 from rotarykiln.errors import InputError, check_range
 
 __all__ = [
@@ -228,14 +228,7 @@ def mechanism_from_files(
     file_reactions = []
     for path in files:
         path = Path(path)
-        try:
-            data = yaml.safe_load(path.read_text(encoding="utf-8"))
-        except OSError as exc:
-            raise InputError(
-                str(path), "unreadable", f"a readable YAML file ({exc.strerror})"
-            ) from None
-        except yaml.YAMLError as exc:
-            raise InputError(str(path), "invalid YAML", f"valid YAML ({exc})") from None
+        data = read_yaml(path)
         if isinstance(data, dict) and data.get("species") is not None:
             sp = load_species(data["species"], base=sp)
         file_reactions.append(path)

@@ -34,11 +34,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from rotarykiln.chemistry import gas_phase as _gas_phase  # noqa: F401  (registers its laws)
 from rotarykiln.chemistry.ratelaws import RATE_LAWS, RateLaw
 from rotarykiln.chemistry.species import SpeciesTable, default_species
+from rotarykiln.chemistry.yaml_files import read_yaml
 from rotarykiln.errors import InputError
 from rotarykiln.units import to_si
 
@@ -316,15 +316,7 @@ def load_reactions(path, species: SpeciesTable | None = None) -> dict[str, React
     species : SpeciesTable, optional
     """
     path = Path(path)
-    try:
-        with open(path, encoding="utf-8") as fh:
-            data = yaml.safe_load(fh)
-    except OSError as exc:
-        raise InputError(
-            str(path), "unreadable", f"a readable YAML file ({exc.strerror})"
-        ) from None
-    except yaml.YAMLError as exc:
-        raise InputError(str(path), "invalid YAML", f"valid YAML ({exc})") from None
+    data = read_yaml(path)
     if not isinstance(data, Mapping) or not isinstance(data.get("reactions"), list):
         raise InputError(str(path), "content", "a mapping with a 'reactions' list")
     out: dict[str, Reaction] = {}

@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from rotarykiln.chemistry.yaml_files import read_yaml
 from rotarykiln.errors import InputError
 
 __all__ = [
@@ -364,16 +365,7 @@ def load_species(source, base: SpeciesTable | None = None) -> SpeciesTable:
     if isinstance(source, Mapping):
         data = source
     else:
-        path = Path(source)
-        try:
-            with open(path, encoding="utf-8") as fh:
-                data = yaml.safe_load(fh)
-        except OSError as exc:
-            raise InputError(
-                str(path), "unreadable", f"a readable YAML file ({exc.strerror})"
-            ) from None
-        except yaml.YAMLError as exc:
-            raise InputError(str(path), "invalid YAML", f"valid YAML ({exc})") from None
+        data = read_yaml(source)
     if isinstance(data, Mapping) and "species" in data and not ({"bed", "gas"} & set(data)):
         data = data["species"]
     return species_table_from_dict(data, default_species() if base is None else base, strict=True)
