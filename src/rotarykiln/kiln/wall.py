@@ -166,15 +166,25 @@ class LinedWall:
         tl = np.asarray(t_wall, dtype=float)
         if self.heater_power is None:
             return np.zeros(tl.shape[:-1])
-        mat = self.layers[-1].material
-        q_last = cylinder_layer_heat_flow(
-            mat.conductivity_integral(tl[..., -2]),
-            mat.conductivity_integral(tl[..., -1]),
-            self.radii[-2],
-            self.radii[-1],
-            check=False,
+        q_last = self._layer_flow(tl, len(self.layers) - 1)
+        q_loss = self._shell_loss(tl)
+        held = ~np.isnan(self.heater_setpoint)
+        return np.where(held, q_loss - q_last, self.heater_power)
+
+    def _layer_flow(self, tl, i):
+        """Heat conducted through lining layer ``i`` (W/m) at the wall temperatures ``tl``."""
+        mat = self.layers[i].material
+        return cylinder_layer_heat_flow(
+            mat.conductivity_integral(tl[..., i]),
+            mat.conductivity_integral(tl[..., i + 1]),
+            self.radii[i],
+            self.radii[i + 1],
+            check=False,  # layer thicknesses are checked > 0 when the layers are built
         )
-        q_loss = shell_heat_loss(
+
+    def _shell_loss(self, tl):
+        """Loss of the shell to the ambient (W/m) at the wall temperatures ``tl``."""
+        return shell_heat_loss(
             tl[..., -1],
             self.ambient_temperature,
             2.0 * self.radii[-1],
@@ -182,8 +192,6 @@ class LinedWall:
             self.air,
             self.wind_speed,
         )
-        held = ~np.isnan(self.heater_setpoint)
-        return np.where(held, q_loss - q_last, self.heater_power)
 
     @property
     def n_temperatures(self) -> int:
@@ -202,26 +210,8 @@ class LinedWall:
         temperatures (K, ``(..., n, n_temperatures)``).
         """
         tl = t_wall
-        q_layers = []
-        for i, layer in enumerate(self.layers):
-            mat = layer.material
-            q_layers.append(
-                cylinder_layer_heat_flow(
-                    mat.conductivity_integral(tl[..., i]),
-                    mat.conductivity_integral(tl[..., i + 1]),
-                    self.radii[i],
-                    self.radii[i + 1],
-                    check=False,  # layer thicknesses are checked > 0 when the layers are built
-                )
-            )
-        q_loss = shell_heat_loss(
-            tl[..., -1],
-            self.ambient_temperature,
-            2.0 * self.radii[-1],
-            self.eps_shell,
-            self.air,
-            self.wind_speed,
-        )
+        q_layers = [self._layer_flow(tl, i) for i in range(len(self.layers))]
+        q_loss = self._shell_loss(tl)
         rows = [q_in - q_layers[0]]
         for i in range(1, len(self.layers)):
             rows.append(q_layers[i - 1] - q_layers[i])
