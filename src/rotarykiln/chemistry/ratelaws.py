@@ -117,6 +117,11 @@ class RateLaw:
     func: Callable = field(repr=False)
     description: str = ""
     choices: dict = field(default_factory=dict)
+    #: Order of the rate in the flow of its basis species, from the law's parameters: 1 for a
+    #: rate proportional to the basis hold-up, the ``order`` of a shrinking-core law, 0 for a
+    #: heat- or supply-limited law (the solver steps an order >= 1 reactant by Newton in its
+    #: flow, one of lower order in the square root of its flow).
+    flow_order: Callable[[dict], float] = field(default=lambda p: 1.0, repr=False)
 
     def validate_params(self, given: Mapping, where: str, basis: str) -> dict:
         """Merge ``given`` into the defaults; :class:`InputError` on unknown or bad values."""
@@ -176,12 +181,23 @@ RATE_LAWS: dict[str, RateLaw] = {}
 
 
 def register_rate_law(
-    name: str, defaults: Mapping, description: str = "", choices: Mapping | None = None
+    name: str,
+    defaults: Mapping,
+    description: str = "",
+    choices: Mapping | None = None,
+    flow_order: Callable[[dict], float] | float = 1.0,
 ):
-    """Decorator registering ``func(ctx, basis, params) -> ndarray`` as a named rate law."""
+    """Decorator registering ``func(ctx, basis, params) -> ndarray`` as a named rate law.
+
+    ``flow_order``: the rate's order in the flow of its basis species (a number, or a function
+    of the parameters), see :attr:`RateLaw.flow_order`.
+    """
+    order = flow_order if callable(flow_order) else (lambda p, v=float(flow_order): v)
 
     def deco(func):
-        RATE_LAWS[name] = RateLaw(name, dict(defaults), func, description, dict(choices or {}))
+        RATE_LAWS[name] = RateLaw(
+            name, dict(defaults), func, description, dict(choices or {}), flow_order=order
+        )
         return func
 
     return deco
@@ -199,6 +215,7 @@ def _conversion_ratio(ctx: RateContext, basis: str, law: str) -> np.ndarray:
     "ahmad_drying",
     {"critical_moisture": 0.1, "latent_heat": LATENT_HEAT_AHMAD, "cap": True},
     "Ahmad (2006) critical-moisture drying",
+    flow_order=0.0,  # constant-rate period: set by the heat supply, not the moisture
 )
 def _ahmad_drying(ctx, basis, p):
     return np.asarray(
@@ -250,6 +267,7 @@ def _check_boiling_params(params: dict, given: Mapping, where: str) -> None:
         "width": 0.25,
     },
     "seed-004 drying below the boiling point; at it the bed is held and its heat evaporates",
+    flow_order=0.0,
 )
 def _boiling_drying(ctx, basis, p):
     # T_boil given, or resolved from the pressure at load (Clausius-Clapeyron; 373.15 K at 1 atm)
@@ -286,6 +304,7 @@ def _boiling_drying(ctx, basis, p):
     "heat_limited_drying",
     {"latent_heat": LATENT_HEAT_AHMAD, "T_boil": 373.15, "width": 1.0},
     "heat-transfer-limited drying at the boiling point",
+    flow_order=0.0,
 )
 def _heat_limited_drying(ctx, basis, p):
     return np.asarray(
@@ -315,6 +334,7 @@ def _luisser_mass_rate(ctx, basis, p, law):
     "luisser_calcination",
     {"A": 9.8e4, "E": 142000.0, "order": 0.5},
     "Luisser (2004) calcination rate quoted by Ahmad (2006), no equilibrium",
+    flow_order=lambda p: p["order"],
 )
 def _luisser(ctx, basis, p):
     return _luisser_mass_rate(ctx, basis, p, "luisser_calcination")
@@ -325,6 +345,7 @@ def _luisser(ctx, basis, p):
     {"A": 9.8e4, "E": 142000.0, "order": 0.5, "equilibrium": "baker"},
     "Luisser rate times (1 - p_CO2/p_eq)",
     choices={"equilibrium": ("baker", "garcia_labiano")},
+    flow_order=lambda p: p["order"],
 )
 def _equilibrium_calcination(ctx, basis, p):
     base = _luisser_mass_rate(ctx, basis, p, "equilibrium_calcination")

@@ -24,6 +24,9 @@ __all__ = ["NewtonReport", "newton_banded"]
 #: A Newton iteration whose line search cannot reduce a residual already within this factor of
 #: the tolerance has reached round-off: it is accepted as converged.
 STAGNATION_FACTOR = 10.0
+#: A squared unknown (x = sqrt(q)) steps as q, by Newton in q, and keeps at least this
+#: fraction of its q when that step would cross zero.
+SQUARED_FLOOR = 1e-3
 
 
 @dataclass(frozen=True)
@@ -91,6 +94,7 @@ def newton_banded(
     temperature_vars: int | None = None,
     where=None,
     step_floor=1.0,
+    squared=None,
 ):
     """Solve ``F(x) = 0`` for ``x`` of shape ``(n, nv)``.
 
@@ -116,6 +120,11 @@ def newton_banded(
     step_floor : float or array (nv,)
         Finite-difference steps are ``1e-7 max(|x|, step_floor)`` (per variable): a small
         floor resolves unknowns that approach 0 (species flows near full conversion).
+    squared : array of bool (nv,), optional
+        Variables that are the square root ``s`` of a positive quantity ``q = s^2``: they step
+        by Newton in ``q`` (``q + 2 s ds``, the same linear solve), kept above
+        ``SQUARED_FLOOR q``. For a residual linear in ``q`` whose root is near ``q = 0`` (a
+        first-order reactant used up), Newton in ``s`` only halves ``s`` per iteration.
 
     Returns
     -------
@@ -130,6 +139,7 @@ def newton_banded(
     x = np.array(x0, dtype=float)
     n, nv = x.shape
     nt = nv if temperature_vars is None else temperature_vars
+    sq = None if squared is None or not np.any(squared) else np.flatnonzero(squared)
     R = F(x)
     norm = float(np.max(np.abs(R))) / scale
     history = [norm]
@@ -152,6 +162,10 @@ def newton_banded(
         accepted = False
         for _ in range(30):
             xt = x + lam * dx
+            if sq is not None:
+                s = x[:, sq]
+                q = np.maximum(s * s + lam * 2.0 * s * dx[:, sq], SQUARED_FLOOR * s * s)
+                xt[:, sq] = np.copysign(np.sqrt(q), s)
             xt[:, :nt] = np.maximum(xt[:, :nt], lower)
             Rt = F(xt)
             nt_norm = float(np.max(np.abs(Rt))) / scale

@@ -128,7 +128,16 @@ def solve_kiln(
         species.append("bed depth (Kramers)")
     where = steady.locator(res.z, steady.equation_names(res.wall, species))
     floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
-    kw = dict(tol=tol, max_iter=max_iter, temperature_vars=i0, where=where, step_floor=floor)
+    squared = np.zeros(res.nv, dtype=bool)
+    squared[i0 : i0 + res.nb] = res.sqrt_mask & _consumed_at_first_order(kiln, res.bed_var)
+    kw = dict(
+        tol=tol,
+        max_iter=max_iter,
+        temperature_vars=i0,
+        where=where,
+        step_floor=floor,
+        squared=squared,
+    )
     if initial is None and (kiln.mechanism.reactions or res.n > SEQUENCE_INERT_MIN):
 
         def make_residual(n):
@@ -228,6 +237,22 @@ def solve_kiln(
         measurements=kiln.measurements,
         fill_profile=res.geometry(x).fill * np.ones(res.n),
     )
+
+
+def _consumed_at_first_order(kiln: Kiln, species) -> np.ndarray:
+    """For each bed species: is every reaction that consumes it of order >= 1 in its flow?
+
+    Those reactants are solved for as the square root of their flow (positive flows), but
+    stepped by Newton in the flow itself: near complete conversion a first-order consumption
+    is linear in the flow, while in its square root the solution is a double root that Newton
+    only halves per iteration (the shrinking-core order 1/2 is linear in the square root, and
+    keeps its steps there).
+    """
+    out = []
+    for s in species:
+        orders = [r.law.flow_order(r.params) for r in kiln.mechanism.reactions if r.basis == s]
+        out.append(bool(orders) and min(orders) >= 1.0)
+    return np.array(out, dtype=bool)
 
 
 def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterations) -> None:
