@@ -325,6 +325,9 @@ class Burner(Section):
     the flame, which needs ``flame_length`` or ``nozzle_diameter``).
     ``soot_volume_fraction``: a luminous flame (soot volume fraction f_v over the flame length,
     e.g. 5e-8 for natural gas; default 0, a non-luminous flame), which needs the flame length.
+    ``air_ingress``: air leaking in at the feed end (the kiln inlet seal), a flow and a
+    temperature: in a counter-current kiln it dilutes the exhaust leaving there (the exhaust
+    temperature and O2 reported after it), in a co-current kiln it joins the burner's air.
     """
 
     fuel: Annotated[str, BeforeValidator(_fuel_composition)] = (
@@ -340,11 +343,32 @@ class Burner(Section):
     combustion: Literal["instant", "burnout"] = "instant"
     flame_length: Length | None = None
     soot_volume_fraction: SootFraction = 0.0
+    air_ingress: BurnerAir | None = None
 
     @model_validator(mode="after")
     def _flows(self):
         self.mass_flows()
+        self.ingress_flow()
         return self
+
+    def ingress_flow(self) -> float:
+        """Mass flow of the air ingress at the feed end, kg/s (0 without one)."""
+        from rotarykiln.materials.gas import molar_mass
+        from rotarykiln.units import gas_flow
+
+        if self.air_ingress is None:
+            return 0.0
+        try:
+            f = gas_flow(
+                self.air_ingress.flow,
+                "air_ingress.flow",
+                reference_temperature=self.reference_temperature,
+                reference_pressure=self.reference_pressure,
+                allow_zero=True,
+            )
+        except InputError as exc:
+            raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
+        return f.mass_flow(molar_mass("O2:0.21, N2:0.79"))
 
     def mass_flows(self) -> tuple[float, float, float]:
         """Fuel, primary air and secondary air mass flows, kg/s (refused: no air, bad flows)."""

@@ -65,6 +65,7 @@ _SHEET_IN = (
     ("sensible_input_gas_W", "gas and air entering (sensible)"),
     ("combustion_heat_W", "heat of combustion"),
     ("electric_heating_W", "electric heating"),
+    ("sensible_input_air_ingress_W", "air ingress at the feed end (sensible)"),
 )
 _SHEET_OUT = (
     ("sensible_input_solids_W", "solids entering, carried through"),

@@ -234,7 +234,9 @@ def _inlet_gas(case) -> dict:
                 f"{b.flame_length:.6g} m",
                 f"<= the kiln length ({length:.6g} m)",
             )
-        flame = fire(burner_from_case(b), case.kiln.diameter, length)
+        flame = fire(
+            burner_from_case(b, case.operation.counter_current), case.kiln.diameter, length
+        )
         p = flame.products
         if b.soot_volume_fraction > 0:
             out["soot"] = _luminous_zone(b, flame, length, case.operation.counter_current)
@@ -354,8 +356,11 @@ def jacket_from_case(section):
     )
 
 
-def burner_from_case(section) -> Burner:
+def burner_from_case(section, counter_current: bool = True) -> Burner:
     """The :class:`~rotarykiln.kiln.flame.Burner` of a case file's ``burner`` section.
+
+    ``counter_current``: the gas direction; an air ingress at the feed end joins the burner's
+    air in a co-current kiln (the burner is at the feed end) and the exhaust otherwise.
 
     Examples
     --------
@@ -377,6 +382,11 @@ def burner_from_case(section) -> Burner:
         nozzle_diameter=section.nozzle_diameter,
         combustion=section.combustion,
         flame_length=section.flame_length,
+        ingress_air=AirStream(
+            section.ingress_flow(),
+            section.air_ingress.temperature if section.air_ingress is not None else 298.15,
+        ),
+        ingress_at_burner=not counter_current,
     )
 
 

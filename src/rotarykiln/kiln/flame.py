@@ -108,7 +108,10 @@ class Burner:
     ``primary_air``, ``secondary_air`` (:class:`AirStream`); ``nozzle_diameter`` (m, of the
     nozzle carrying fuel and primary air; None if unknown); ``combustion`` (one of
     :data:`COMBUSTION_MODELS`); ``flame_length`` (m, an override of the computed length);
-    ``entrainment`` (-, Ricou-Spalding constant).
+    ``entrainment`` (-, Ricou-Spalding constant); ``ingress_air`` (:class:`AirStream`, air
+    leaking in at the feed end) and ``ingress_at_burner`` (True when the burner is at the feed
+    end, a co-current kiln: the ingress then joins the burner's air; otherwise it mixes into the
+    exhaust leaving the feed end, outside the kiln's gas balance).
     """
 
     fuel: str
@@ -120,6 +123,8 @@ class Burner:
     combustion: str = "instant"
     flame_length: float | None = None
     entrainment: float = ENTRAINMENT
+    ingress_air: AirStream = AirStream(0.0)
+    ingress_at_burner: bool = False
 
     def __post_init__(self):
         check_positive("burner.fuel_flow", self.fuel_flow, "kg/s")
@@ -140,6 +145,18 @@ class Burner:
     def air_flow(self) -> float:
         """Primary plus secondary air, kg/s."""
         return self.primary_air.flow + self.secondary_air.flow
+
+    @property
+    def flame_air(self) -> tuple[AirStream, ...]:
+        """The air streams that burn the fuel: primary, secondary and an ingress at the
+        burner end."""
+        extra = (self.ingress_air,) if self.ingress_at_burner else ()
+        return (self.primary_air, self.secondary_air, *extra)
+
+    @property
+    def exhaust_ingress(self) -> AirStream:
+        """The air that mixes into the exhaust outside the kiln (none: a zero flow)."""
+        return AirStream(0.0) if self.ingress_at_burner else self.ingress_air
 
 
 @dataclass(frozen=True)
@@ -430,12 +447,13 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     check_positive("kiln.diameter", kiln_diameter, "m")
     fuel = parse_composition(burner.fuel)
     mm_fuel, o2_demand, lhv, hhv = _fuel_data(fuel)
-    t_air = _mix_air_temperature((burner.primary_air, burner.secondary_air))
-    products = burn_fuel(fuel, burner.fuel_flow, burner.air_flow, burner.fuel_temperature, t_air)
+    air = sum(a.flow for a in burner.flame_air)
+    t_air = _mix_air_temperature(burner.flame_air)
+    products = burn_fuel(fuel, burner.fuel_flow, air, burner.fuel_temperature, t_air)
     n_fuel = burner.fuel_flow / mm_fuel
     n_stoich_air = n_fuel * o2_demand / 0.21
     if n_stoich_air > 0:
-        lam = burner.air_flow / AIR_MOLAR_MASS / n_stoich_air
+        lam = air / AIR_MOLAR_MASS / n_stoich_air
         lam_p = burner.primary_air.flow / AIR_MOLAR_MASS / n_stoich_air
     else:
         lam = lam_p = float("inf")

@@ -32,6 +32,8 @@ class KilnSolution:
     the solids, shell and exhaust losses, closure; thermal efficiency), ``burner`` (dict of
     the burner's figures; empty without one). ``fill_profile`` (-, cells), ``measurements``
     (measured profiles drawn by :meth:`plot`). Solver: ``iterations``, ``residual``.
+    ``exhaust``: the gas leaving, after an air ingress at the feed end has mixed into it
+    (``temperature_K``, ``flow_kg_s``, ``O2_dry_mole_fraction``, ``air_ingress_kg_s``).
     """
 
     name: str
@@ -65,6 +67,7 @@ class KilnSolution:
     burner: dict = field(repr=False, default_factory=dict)
     measurements: dict | None = field(repr=False, default=None)
     fill_profile: np.ndarray | None = field(repr=False, default=None)
+    exhaust: dict = field(repr=False, default_factory=dict)
 
     @property
     def t_shell(self) -> np.ndarray | None:
@@ -162,6 +165,7 @@ class KilnSolution:
                 sum(v[0 if self.counter_current else -1] for v in self.gas_flows.values())
             ),
             "solids_outlet_flow_kg_s": float(sum(v[-1] for v in self.bed_flows.values())),
+            **{f"exhaust_{k}": v for k, v in self.exhaust.items()},
             "reaction_heat_W": self.reaction_heat,
             "shell_loss_W": self.shell_loss,
             "heat_to_solids_W": self.heat_to_solids,
