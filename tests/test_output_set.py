@@ -180,3 +180,31 @@ def test_an_older_cut_commit_goes_in_before_a_newer_run_commits(folder, monkeypa
         monkeypatch.setattr(outputs.shutil, "rmtree", real_rmtree)
     assert _names(folder) == ["b.txt", "mine.txt", MANIFEST]  # B's set, A's completed first
     assert _stagings(folder.parent) == []
+
+
+def test_an_interrupt_that_surfaces_as_another_error_is_still_one_line(monkeypatch, capsys):
+    # SIGINT inside a C extension's initialisation (matplotlib's ft2font while a run imports
+    # it) reaches Python as "ImportError: initialization failed", not as KeyboardInterrupt
+    from rotarykiln import cli
+
+    def interrupted_import(args):
+        try:
+            signal.raise_signal(signal.SIGINT)
+        except KeyboardInterrupt:
+            raise ImportError("initialization failed") from None
+
+    monkeypatch.setattr(cli, "_main", interrupted_import)
+    assert cli.main(["run", "x"]) == 128 + signal.SIGINT
+    err = capsys.readouterr().err
+    assert err == "rotarykiln: interrupted\n"
+
+
+def test_an_error_without_a_signal_is_not_taken_for_an_interrupt(monkeypatch):
+    from rotarykiln import cli
+
+    def broken(args):
+        raise ImportError("a real bug")
+
+    monkeypatch.setattr(cli, "_main", broken)
+    with pytest.raises(ImportError, match="a real bug"):
+        cli.main(["run", "x"])

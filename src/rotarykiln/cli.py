@@ -11,7 +11,7 @@ exits with code 1. Warnings print as one ``warning:`` line each.
 
 from __future__ import annotations
 
-from rotarykiln.commands._signals import handled, install_early, signal_exit
+from rotarykiln.commands._signals import handled, install_early, interruption, signal_exit
 
 install_early()  # the program: SIGINT/SIGTERM print one line from here on, not a traceback
 
@@ -75,11 +75,14 @@ def main(argv: list[str] | None = None) -> int:
     """
     # called as the program (argv from sys.argv): a signal after the end is ignored, not a
     # traceback of the interpreter's shutdown; called in-process, the caller's handlers return
-    with handled(at_exit_ignore=argv is None):
+    with handled(at_exit_ignore=argv is None) as received:
         try:
             return _main(argv)
-        except KeyboardInterrupt as exc:
-            code, text = signal_exit(exc)
+        except BaseException as exc:
+            stop = interruption(received, exc)
+            if stop is None:
+                raise
+            code, text = signal_exit(stop)
             print(f"rotarykiln: {text}", file=sys.stderr)
             return code
 

@@ -16,13 +16,26 @@ import signal
 import sys
 import threading
 
-__all__ = ["Terminated", "handled", "install_early", "signal_exit"]
+__all__ = ["Terminated", "handled", "install_early", "interruption", "signal_exit"]
 
 
 class Terminated(KeyboardInterrupt):
     """SIGTERM received (raised like Ctrl-C's KeyboardInterrupt, so it unwinds the same way)."""
 
     signum = signal.SIGTERM
+
+
+def interruption(received: list, exc: BaseException) -> KeyboardInterrupt | None:
+    """The interruption behind ``exc`` when a signal has been ``received``, else None.
+
+    The KeyboardInterrupt of a signal can surface as another error: raised inside a C
+    extension's initialisation (matplotlib's ft2font while it is imported) it becomes
+    "ImportError: initialization failed". Once a signal has come, such an error is the
+    interruption, not a bug.
+    """
+    if not received or isinstance(exc, KeyboardInterrupt):
+        return exc if isinstance(exc, KeyboardInterrupt) else None
+    return Terminated() if received[0] == signal.SIGTERM else KeyboardInterrupt()
 
 
 def signal_exit(exc: KeyboardInterrupt) -> tuple[int, str]:
@@ -62,12 +75,15 @@ def install_early() -> None:
 def handled(*, at_exit_ignore: bool):
     """SIGINT -> KeyboardInterrupt, SIGTERM -> :class:`Terminated` inside the block.
 
+    Yields the list of the signals received (empty until one comes): an error raised after a
+    signal is the interruption surfacing in another form (see :func:`interruption`).
+
     ``at_exit_ignore``: on leaving, ignore both signals (the program is about to end: a signal
     during interpreter shutdown would print a traceback) instead of restoring the previous
     handlers (an in-process caller, e.g. a test, gets its own handlers back).
     """
     if threading.current_thread() is not threading.main_thread():
-        yield
+        yield []
         return
     sigs = (signal.SIGINT, signal.SIGTERM)
     previous = {s: signal.getsignal(s) for s in sigs}
@@ -82,7 +98,7 @@ def handled(*, at_exit_ignore: bool):
     try:
         for s in sigs:
             signal.signal(s, on_signal)
-        yield
+        yield raised
     finally:
         for s in sigs:
             signal.signal(s, signal.SIG_IGN if at_exit_ignore else previous[s])
