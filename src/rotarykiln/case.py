@@ -325,6 +325,9 @@ class Burner(Section):
     the flame, which needs ``flame_length`` or ``nozzle_diameter``).
     ``soot_volume_fraction``: a luminous flame (soot volume fraction f_v over the flame length,
     e.g. 5e-8 for natural gas; default 0, a non-luminous flame), which needs the flame length.
+    ``products``: ``equilibrium`` (default: the products dissociate at equilibrium, which
+    lowers a hot flame's adiabatic temperature and returns the heat where the gas cools) or
+    ``complete`` (frozen complete-combustion products).
     ``air_ingress``: air leaking in at the feed end (the kiln inlet seal), a flow and a
     temperature: in a counter-current kiln it dilutes the exhaust leaving there (the exhaust
     temperature and O2 reported after it), in a co-current kiln it joins the burner's air.
@@ -341,6 +344,7 @@ class Burner(Section):
     reference_pressure: Pressure | None = None
     nozzle_diameter: Length | None = None
     combustion: Literal["instant", "burnout"] = "instant"
+    products: Literal["equilibrium", "complete"] = "equilibrium"
     flame_length: Length | None = None
     soot_volume_fraction: SootFraction = 0.0
     air_ingress: BurnerAir | None = None

@@ -90,7 +90,9 @@ def test_feed_step_of_a_calcining_kiln(limestone):
         "output_every": "1 h",
     }
     tr = parse_transient(spec, limestone, until)
-    sol = simulate(limestone, 20, tr, until)
+    # rtol 1e-7: at the default 1e-6 the used-up CaCO3 of the last cells ends ~1e-4 (of its
+    # inlet flow) below 0, the integrator's error there, not a steady-state difference
+    sol = simulate(limestone, 20, tr, until, rtol=1e-7)
     x1, i0 = _new_steady(limestone, 20, tr, until)
     assert np.abs(sol.x[-1, :, :i0] - x1[:, :i0]).max() < 0.5
     assert np.abs(sol.x[-1, :, i0:] - x1[:, i0:]).max() < 1e-4  # flows over the inlet flows

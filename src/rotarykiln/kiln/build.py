@@ -387,6 +387,7 @@ def burner_from_case(section, counter_current: bool = True) -> Burner:
             section.air_ingress.temperature if section.air_ingress is not None else 298.15,
         ),
         ingress_at_burner=not counter_current,
+        products=section.products,
     )
 
 

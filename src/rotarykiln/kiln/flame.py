@@ -24,6 +24,9 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
   with :math:`C_T` the mole fraction of nozzle fluid in its stoichiometric mixture with air
   (1 when the nozzle fluid is already lean), :math:`T_F` its adiabatic flame temperature,
   :math:`\alpha_T = 1`;
+- the **dissociation** of the products (``products: equilibrium``, the default): their
+  dissociation heat at equilibrium (:mod:`rotarykiln.materials.dissociation`), carried by the
+  kiln gas, and the equilibrium adiabatic temperature; ``complete`` keeps the frozen products;
 - **where the fuel burns**, by the combustion model:
 
   - ``instant`` (default): the fuel burns completely where it enters (Hanein et al. 2017, the
@@ -56,6 +59,11 @@ from functools import lru_cache
 import numpy as np
 
 from rotarykiln.errors import InputError, check_positive
+from rotarykiln.materials.dissociation import (
+    DISSOCIATION_SPECIES,
+    dissociation_heat,
+    equilibrium_adiabatic_temperature,
+)
 from rotarykiln.materials.gas import (
     MECHANISM,
     R_UNIVERSAL,
@@ -81,6 +89,7 @@ __all__ = [
 AIR = "O2:0.21, N2:0.79"
 AIR_MOLAR_MASS = 0.21 * 0.031998 + 0.79 * 0.0280134  # kg/mol
 COMBUSTION_MODELS = ("instant", "burnout")
+PRODUCT_MODELS = ("equilibrium", "complete")
 ENTRAINMENT = 0.32  # Ricou & Spalding (1961), far field
 JET_SPREAD = 0.2  # half-width growth rate of a round jet, flames.md section 2
 BURNOUT_EXPONENT = 1.4  # width ratio squared of the mixture-fraction and velocity profiles
@@ -111,7 +120,10 @@ class Burner:
     ``entrainment`` (-, Ricou-Spalding constant); ``ingress_air`` (:class:`AirStream`, air
     leaking in at the feed end) and ``ingress_at_burner`` (True when the burner is at the feed
     end, a co-current kiln: the ingress then joins the burner's air; otherwise it mixes into the
-    exhaust leaving the feed end, outside the kiln's gas balance).
+    exhaust leaving the feed end, outside the kiln's gas balance); ``products``
+    (``equilibrium``: the products dissociate at equilibrium, their dissociation heat carried
+    by the gas, :mod:`rotarykiln.materials.dissociation`; ``complete``: frozen complete
+    combustion products).
     """
 
     fuel: str
@@ -125,6 +137,7 @@ class Burner:
     entrainment: float = ENTRAINMENT
     ingress_air: AirStream = AirStream(0.0)
     ingress_at_burner: bool = False
+    products: str = "equilibrium"
 
     def __post_init__(self):
         check_positive("burner.fuel_flow", self.fuel_flow, "kg/s")
@@ -135,6 +148,8 @@ class Burner:
             )
         if self.combustion not in COMBUSTION_MODELS:
             raise InputError("burner.combustion", self.combustion, " or ".join(COMBUSTION_MODELS))
+        if self.products not in PRODUCT_MODELS:
+            raise InputError("burner.products", self.products, " or ".join(PRODUCT_MODELS))
         if self.nozzle_diameter is not None:
             check_positive("burner.nozzle_diameter", self.nozzle_diameter, "m")
         if self.flame_length is not None:
@@ -189,12 +204,22 @@ class Flame:
     recirculating: bool | None
     flame_length: float | None
     combustion: str
+    dissociation: object = None
+    equilibrium_temperature: float | None = None
+
+    @property
+    def adiabatic_temperature(self) -> float:
+        """Adiabatic temperature of the fully mixed products, K: at equilibrium (dissociated)
+        with ``products: equilibrium``, frozen otherwise."""
+        if self.equilibrium_temperature is not None:
+            return self.equilibrium_temperature
+        return self.products.adiabatic_temperature
 
     @property
     def inlet_temperature(self) -> float:
         """Temperature at which the gas enters the kiln's gas balance, K."""
         if self.combustion == "instant":
-            return self.products.adiabatic_temperature
+            return self.adiabatic_temperature
         return self.products.inlet_temperature
 
     @property
@@ -216,7 +241,9 @@ class Flame:
             "fuel_hhv_input_W": self.fuel_hhv,
             "excess_air": self.excess_air,
             "primary_excess_air": self.primary_excess_air,
-            "adiabatic_temperature_K": self.products.adiabatic_temperature,
+            "adiabatic_temperature_K": self.adiabatic_temperature,
+            "adiabatic_temperature_frozen_K": self.products.adiabatic_temperature,
+            "products_model": self.burner.products,
             "flue_gas_flow_kg_s": self.products.mass_flow,
         }
         for key, value in (
@@ -407,7 +434,7 @@ def _mix_air_temperature(streams) -> float:
     for s in flows:
         g = ct.Solution(MECHANISM)
         g.TPX = s.temperature, 101325.0, AIR
-        q = ct.Quantity(g, mass=s.flow)
+        q = ct.Quantity(g, mass=s.flow, constant="HP")  # not the default UV (a rigid vessel)
         total = q if total is None else total + q
     return float(total.T)
 
@@ -489,9 +516,16 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
             f"{burner.flame_length:.6g} m",
             f"<= the kiln length ({kiln_length:.6g} m)",
         )
+    dissociation = t_eq = None
+    if burner.products == "equilibrium":
+        comp = [(k, x) for k, x in products.composition if k in DISSOCIATION_SPECIES]
+        dissociation = dissociation_heat(comp)
+        t_eq = equilibrium_adiabatic_temperature(comp, products.adiabatic_temperature)
     return Flame(
         burner=burner,
         products=products,
+        dissociation=dissociation,
+        equilibrium_temperature=t_eq,
         fuel_lhv=burner.fuel_flow * lhv,
         fuel_hhv=burner.fuel_flow * hhv,
         sensible_input=sensible,

@@ -14,6 +14,11 @@ Herning-Zipperer rule for the viscosity, both within ~10 % of Cantera's mixture-
 for flue gases). Species without a Cantera entry (the lumped ``volatiles``) carry their mean c_p
 from ``chemistry/species.yaml`` and are left out of the transport mixing.
 
+With a burner whose products dissociate (``burner.products: equilibrium``), the CO2 and H2O
+of the gas also carry the products' dissociation heat per kg of CO2 + H2O
+(:class:`~rotarykiln.materials.dissociation.DissociationHeat`): the gas enthalpy is then the
+equilibrium one, exactly as before below about 1500 K.
+
 For speed the species fits (all on the breakpoints of
 :data:`~rotarykiln.materials.gas.T_GRID`) are stacked on a last axis: one interval search and
 one Horner evaluation give every species at once (the constant-c_p species are stacked as
@@ -58,7 +63,9 @@ CANTERA_NAMES = {
 class GasMixture:
     """Property model of a gas made of ``names`` (chemistry gas species), mixed by composition.
 
-    Attributes: ``names`` (tuple), ``molar_mass`` (kg/mol per species, array).
+    Attributes: ``names`` (tuple), ``molar_mass`` (kg/mol per species, array),
+    ``dissociation`` (a :class:`~rotarykiln.materials.dissociation.DissociationHeat` added to
+    the enthalpy and c_p of CO2 and H2O, or None).
     Methods take species mass flows or mass fractions on the last axis.
 
     Examples
@@ -72,9 +79,10 @@ class GasMixture:
     names: tuple[str, ...]
     molar_mass: np.ndarray
     _tables: tuple
+    dissociation: object = None
 
     @classmethod
-    def of(cls, names, species: SpeciesTable | None = None) -> GasMixture:
+    def of(cls, names, species: SpeciesTable | None = None, dissociation=None) -> GasMixture:
         """Mixture model of the gas species ``names``."""
         sp = species or default_species()
         tables = []
@@ -82,7 +90,7 @@ class GasMixture:
             ct_name = CANTERA_NAMES.get(n)
             tables.append(None if ct_name is None else gas_table(f"{ct_name}:1"))
         mm = np.array([sp[n].molar_mass for n in names])
-        return cls(tuple(names), mm, tuple(tables))
+        return cls(tuple(names), mm, tuple(tables), dissociation)
 
     def _fallback_cp(self, i: int) -> float:
         return default_species()[self.names[i]].cp
@@ -110,6 +118,14 @@ class GasMixture:
             h[:, :, i] = tab._h.c
             tr[:, :, i] = tab._k.c
             tr[:, :, n + i] = tab._mu.c
+        if self.dissociation is not None:
+            from rotarykiln.kiln.thermo_gas import fit_pieces
+
+            cp_d, h_d = fit_pieces(self.dissociation)
+            for i, name in enumerate(self.names):
+                if name in ("CO2", "H2O"):
+                    cp[:, :, i] += cp_d
+                    h[:, :, i] += h_d
         cp_fit = PiecewisePolynomials(T_GRID, cp)
         ends = cp_fit.evaluate(*cp_fit.interval(np.array([T_MIN, T_MAX])))
         has_table = np.array([tab is not None for tab in self._tables], dtype=float)

@@ -107,7 +107,10 @@ class KilnResidual:
             for i, s in enumerate(self.bed_names)
             if sp[s].thermo is not None and s not in k.bed_solids and s not in k.bed_cp
         ]
-        self.mixture = mixture_of(self.gas_names, sp)
+        flame = k.flame
+        self.mixture = mixture_of(
+            self.gas_names, sp, flame.dissociation if flame is not None else None
+        )
         self.flow_in = {s: float(k.feed.get(s, 0.0)) for s in sp.bed_names}
         self.i_h2o = self.gas_names.index("H2O") if "H2O" in self.gas_names else None
         # grid, wall and exchange (shared with the heat model)

@@ -147,7 +147,13 @@ def solve_kiln(
 
         x0 = _initial_guess(res)
         x, total = steady.newton_sequenced(
-            res, x0, q_ref, _continuation(res), make_residual=make_residual, **kw
+            res,
+            x0,
+            q_ref,
+            _continuation(res),
+            make_residual=make_residual,
+            continuation_of=_continuation,
+            **kw,
         )
     else:
         x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)

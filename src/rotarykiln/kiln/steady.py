@@ -169,6 +169,7 @@ def newton_sequenced(
     continuation,
     *,
     make_residual: Callable[[int], object],
+    continuation_of: Callable[[object], Callable] | None = None,
     min_cells: int = SEQUENCE_MIN,
     ratio: int = SEQUENCE_RATIO,
     coarse_tol: float = SEQUENCE_TOL,
@@ -180,9 +181,11 @@ def newton_sequenced(
     coarser (``make_residual(n)`` builds the residual of the same kiln on ``n`` cells, its
     ``q_ref`` set), solved there by plain Newton to ``coarse_tol`` (itself from a sequenced
     start) and interpolated back (:func:`interpolate_unknowns`); Newton on ``F`` then starts
-    there and converges to ``kw["tol"]`` as usual. If the coarse or the fine Newton fails, the
-    solve falls back to :func:`newton_with_continuation` from ``x0`` (the path without
-    sequencing), so only the time changes.
+    there and converges to ``kw["tol"]`` as usual. The coarsest grid, where Newton from the
+    guess fails, is solved with the continuation ``continuation_of(R)`` of its own residual
+    (when given: cheap there, and the finer grids then start from its solution). If the
+    coarse or the fine Newton fails, the solve falls back to :func:`newton_with_continuation`
+    from ``x0`` (the path without sequencing), so only the time changes.
 
     Returns ``(x, Newton iterations on the grid of F)``.
     """
@@ -191,12 +194,17 @@ def newton_sequenced(
 
         def solved(R, x_start):
             """Unknowns of R (Newton from a sequenced start), None if Newton fails."""
-            if R.n > min_cells:
+            coarsest = R.n <= min_cells
+            if not coarsest:
                 C = make_residual(max(R.n // ratio, 4))
                 xc = solved(C, interpolate_unknowns(R, x_start, C))
                 if xc is not None:
                     x_start = interpolate_unknowns(C, xc, R)
             try:
+                if coarsest and continuation_of is not None:
+                    return newton_with_continuation(
+                        R, x_start, scale, continuation_of(R), **coarse_kw
+                    )[0]
                 return newton.newton_banded(R, x_start, scale, **coarse_kw)[0]
             except ConvergenceError:
                 return None

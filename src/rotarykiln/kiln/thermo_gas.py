@@ -92,11 +92,12 @@ class ThermoGasMixture(GasMixture):
         return (cp_new, PiecewisePolynomials(T_GRID, h_c), tr, ends[0], ends[1], weights)
 
 
-def mixture_of(names, species: SpeciesTable | None = None) -> GasMixture:
+def mixture_of(names, species: SpeciesTable | None = None, dissociation=None) -> GasMixture:
     """The gas mixture model of the gas species ``names`` of ``species``.
 
     A plain :class:`GasMixture` when every species has a Cantera table or is a species of the
-    built-in table without a c_p(T); otherwise a :class:`ThermoGasMixture`.
+    built-in table without a c_p(T); otherwise a :class:`ThermoGasMixture`. ``dissociation``:
+    the dissociation heat of a burner's products, carried by CO2 and H2O (or None).
 
     Examples
     --------
@@ -111,9 +112,9 @@ def mixture_of(names, species: SpeciesTable | None = None) -> GasMixture:
     thermos = tuple(None if CANTERA_NAMES.get(n) else sp[n].thermo for n in names)
     custom = any(t is not None for t in thermos) or any(n not in builtin for n in names)
     if not custom:
-        return GasMixture.of(names, sp)
+        return GasMixture.of(names, sp, dissociation)
     tables = tuple(
         None if CANTERA_NAMES.get(n) is None else gas_table(f"{CANTERA_NAMES[n]}:1") for n in names
     )
     mm = np.array([sp[n].molar_mass for n in names])
-    return ThermoGasMixture(tuple(names), mm, tables, thermos, sp)
+    return ThermoGasMixture(tuple(names), mm, tables, dissociation, thermos, sp)

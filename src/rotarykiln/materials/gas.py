@@ -373,8 +373,10 @@ def burn_fuel(
     gas_f.TPX = fuel_temperature, 101325.0, fuel_x
     gas_a = ct.Solution(MECHANISM)
     gas_a.TPX = air_temperature, 101325.0, "O2:0.21, N2:0.79"
-    qf = ct.Quantity(gas_f, mass=fuel_flow)
-    qa = ct.Quantity(gas_a, mass=air_flow)
+    # constant="HP": streams mixing at constant pressure and enthalpy (Cantera's default, UV,
+    # is a rigid vessel: wrong by ~15 K for air preheated to 1100 K)
+    qf = ct.Quantity(gas_f, mass=fuel_flow, constant="HP")
+    qa = ct.Quantity(gas_a, mass=air_flow, constant="HP")
     mix = qf + qa
     t_in = float(mix.T)
     h_reactants = float(mix.enthalpy_mass)
