@@ -431,8 +431,30 @@ class Closures(Section):
     )
 
 
+class Thermocouple(Section):
+    """The bare thermocouple of the gas readings (:mod:`rotarykiln.heat.thermocouple`):
+    junction ``diameter``, ``emissivity`` (default 0.8) and ``bed_view`` (the share of its view
+    taken by the bed surface, the rest by the wall: 0.5 just above the bed)."""
+
+    diameter: Length
+    emissivity: Annotated[float, BeforeValidator(lambda v: _emissivity(v))] = 0.8
+    bed_view: Fraction = 0.5
+
+
+def _emissivity(v: Any) -> float:
+    x = _positive_number(v)
+    if x > 1.0:
+        raise PydanticCustomError("number", "{value} is not in (0, 1]", {"value": v})
+    return x
+
+
 class Measurements(Section):
-    """Measured profiles to overlay on the figure and score the solution against."""
+    """Measured profiles to overlay on the figure and score the solution against.
+
+    ``thermocouple``: the gas readings are bare-thermocouple readings; the solution then also
+    gives the gas temperature such a thermocouple would read (``T_gas_thermocouple_K``) and
+    scores the gas readings against it as well as against the raw gas temperature.
+    """
 
     z_gas: list[Position] = []
     t_gas: list[Temperature] = []
@@ -443,6 +465,7 @@ class Measurements(Section):
     z_gas_wall: list[Position] = []
     t_gas_wall: list[Temperature] = []
     wall_interface: int = 0
+    thermocouple: Thermocouple | None = None
 
     @model_validator(mode="after")
     def _pairs(self):

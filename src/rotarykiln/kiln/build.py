@@ -76,8 +76,11 @@ def _common(case, wall: dict) -> dict:
     meas = None
     if case.measurements is not None:
         m = case.measurements
-        meas = {k: np.asarray(v, dtype=float) for k, v in m.model_dump().items()}
+        dump = m.model_dump(exclude={"thermocouple"})
+        meas = {k: np.asarray(v, dtype=float) for k, v in dump.items()}
         meas["wall_interface"] = int(m.wall_interface)
+        if m.thermocouple is not None:
+            meas["thermocouple"] = m.thermocouple.model_dump()
     w = case.wall
     return dict(
         length=case.kiln.length,

@@ -24,12 +24,15 @@ _MEASURED = (
 )
 
 
-def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
+def plot_temperature_profiles(
+    sol, ax=None, *, t_shell=None, measurements=None, t_gas_thermocouple=None
+):
     """Gas, bed, inner wall (and shell) temperatures along the kiln, measured points if any.
 
     ``sol`` has ``z_nodes``, ``t_gas_nodes``, ``t_bed_nodes`` (faces), ``z``, ``t_wall``
-    (cells) and ``name``; ``t_shell`` (K, cells) and ``measurements`` (``z_gas``, ``t_gas``,
-    ... arrays) are drawn when given. Returns the Figure.
+    (cells) and ``name``; ``t_shell`` (K, cells), ``measurements`` (``z_gas``, ``t_gas``,
+    ... arrays) and ``t_gas_thermocouple`` (K, faces: what a bare thermocouple would read) are
+    drawn when given. Returns the Figure.
     """
     import matplotlib.pyplot as plt
 
@@ -41,6 +44,10 @@ def plot_temperature_profiles(sol, ax=None, *, t_shell=None, measurements=None):
     if t_shell is not None:
         ax.plot(sol.z, t_shell, color=COLOURS["shell"], ls="--", label="shell")
     m = measurements or {}
+    if t_gas_thermocouple is not None:
+        ax.plot(
+            sol.z_nodes, t_gas_thermocouple, color=COLOURS["gas"], ls=":", label="gas, thermocouple"
+        )
     for key, color, marker in _MEASURED:
         if len(m.get(f"z_{key}", ())) and len(m.get(f"t_{key}", ())):
             ax.plot(

@@ -143,6 +143,49 @@ class KilnSolution:
         rows = self.t_lining if self.t_lining is not None else self.t_wall[None, :]
         return np.interp(z, self.z, rows[interface])
 
+    def gas_thermocouple(self, diameter, emissivity=0.8, bed_view=0.5) -> np.ndarray:
+        """What a bare thermocouple in the gas would read, K (cells): the cell's gas at its
+        velocity, the junction seeing the bed over ``bed_view`` of its view and the inner wall
+        over the rest (:func:`rotarykiln.heat.thermocouple.bare_thermocouple_temperature`, air
+        properties; ``diameter`` m, ``emissivity`` -).
+        """
+        from rotarykiln.heat.thermocouple import bare_thermocouple_temperature
+
+        t_s = (bed_view * self.t_bed**4 + (1.0 - bed_view) * self.t_wall**4) ** 0.25
+        u = np.asarray(self.fluxes["gas_velocity"], dtype=float)
+        return bare_thermocouple_temperature(self.t_gas, t_s, u, diameter, emissivity)
+
+    def _thermocouple_nodes(self) -> np.ndarray | None:
+        """The thermocouple reading of the case's ``measurements.thermocouple`` at the faces."""
+        tc = (self.measurements or {}).get("thermocouple")
+        if not tc or "gas_velocity" not in self.fluxes:
+            return None
+        cells = self.gas_thermocouple(tc["diameter"], tc["emissivity"], tc["bed_view"])
+        return np.interp(self.z_nodes, self.z, cells)
+
+    def measured_rmse(self) -> dict:
+        """RMSE (K) of the solution at the measured positions, per measured profile: bed, gas
+        and gas near the wall (raw gas temperature), the gas readings through the case's
+        thermocouple (``gas_thermocouple``, when given), inner wall (or the measured wall
+        interface). Empty without measurements."""
+        m = self.measurements or {}
+        out = {}
+        tc = self._thermocouple_nodes()
+        model = {
+            "bed": self.bed_temperature_at,
+            "gas": self.gas_temperature_at,
+            "gas_wall": self.gas_temperature_at,
+            "wall": lambda z: self.wall_temperature_at(z, int(m.get("wall_interface", 0))),
+        }
+        for key, at in model.items():
+            z, t = m.get(f"z_{key}", ()), m.get(f"t_{key}", ())
+            if len(z) and len(t):
+                out[key] = float(np.sqrt(np.mean((at(np.asarray(z)) - np.asarray(t)) ** 2)))
+                if tc is not None and key == "gas":  # the readings the thermocouple is for
+                    reading = np.interp(z, self.z_nodes, tc)
+                    out[f"{key}_thermocouple"] = float(np.sqrt(np.mean((reading - t) ** 2)))
+        return out
+
     @property
     def gas_outlet_temperature(self) -> float:
         """Gas temperature where the gas leaves (z = 0 counter-current, z = L co-current), K."""
@@ -166,6 +209,7 @@ class KilnSolution:
             ),
             "solids_outlet_flow_kg_s": float(sum(v[-1] for v in self.bed_flows.values())),
             **{f"exhaust_{k}": v for k, v in self.exhaust.items()},
+            **{f"rmse_{k}_K": v for k, v in self.measured_rmse().items()},
             "reaction_heat_W": self.reaction_heat,
             "shell_loss_W": self.shell_loss,
             "heat_to_solids_W": self.heat_to_solids,
@@ -213,6 +257,9 @@ class KilnSolution:
         }
         if self.t_shell is not None:
             data["T_shell_K"] = np.interp(self.z_nodes, self.z, self.t_shell)
+        tc = self._thermocouple_nodes()
+        if tc is not None:  # beside the raw gas temperature, never instead of it
+            data["T_gas_thermocouple_K"] = tc
         for s, q in self.bed_flows.items():
             data[f"bed_{s}_kg_s"] = q
         for s, q in self.gas_flows.items():
@@ -236,7 +283,11 @@ class KilnSolution:
             fig = np.atleast_1d(ax)[0].figure
         axes = np.atleast_1d(ax)
         plot_temperature_profiles(
-            self, axes[0], t_shell=self.t_shell, measurements=self.measurements
+            self,
+            axes[0],
+            t_shell=self.t_shell,
+            measurements=self.measurements,
+            t_gas_thermocouple=self._thermocouple_nodes(),
         )
         if not reacting or len(axes) < 2:
             fig.tight_layout()

@@ -170,6 +170,8 @@ def solve_kiln(
     g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
     geo = res.geometry(x)
     res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True, geo=geo)
+    gas = res.gas_state(g_mean, geo)
+    fl["gas_velocity"] = gas.mass_flux / gas.density(fl["t_gas_mean"])  # m/s, cells
     for solid in {id(s): s for s in kiln.bed_solids.values()}.values():
         solid.check_range(tb_n)  # a library solid's c_p fit extrapolated: OutOfRangeWarning
     # global balances
