@@ -8,11 +8,12 @@ from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
 from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln import steady
+from rotarykiln.kiln.accounting import energy_sheet, exhaust_state
 from rotarykiln.kiln.model import Kiln
 from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.solution import KilnSolution
 
-__all__ = ["solve_kiln", "energy_sheet", "ENERGY_RTOL"]
+__all__ = ["solve_kiln", "ENERGY_RTOL"]
 
 #: Energy closure demanded of every reacting solve (issue 7).
 ENERGY_RTOL = 1e-6
@@ -250,62 +251,6 @@ def solve_kiln(
     )
 
 
-def exhaust_state(res: KilnResidual, flows, temperature: float) -> tuple[dict, float]:
-    """The exhaust leaving the kiln, after the air ingress at the feed end mixes into it.
-
-    A counter-current fired kiln draws air in at its feed-end seal; it mixes with the gas
-    leaving there, at constant pressure and enthalpy, outside the kiln's gas balance (the
-    profiles are not changed by it). Without an ingress the exhaust is the gas outlet.
-
-    Parameters
-    ----------
-    res : KilnResidual
-    flows : array (n_gas,), kg/s
-        Gas species flows leaving the kiln.
-    temperature : float, K
-        Gas outlet temperature.
-
-    Returns
-    -------
-    (dict, float)
-        ``temperature_K``, ``flow_kg_s``, ``O2_dry_mole_fraction`` (of the exhaust after the
-        ingress; NaN without O2 or dry gas), ``air_ingress_kg_s``; and the sensible enthalpy
-        of the ingress air above 298.15 K, W (an input of the energy sheet).
-    """
-    flows = np.maximum(np.asarray(flows, dtype=float), 0.0)
-    names = list(res.gas_names)
-    flame = res.kiln.flame
-    air = flame.burner.exhaust_ingress if flame is not None else None
-    q_air = np.zeros(len(names))
-    h_in = 0.0
-    t_mix = float(temperature)
-    if air is not None and air.flow > 0:
-        # the burner's air (flame.AIR: O2 0.21, N2 0.79 by mole), by mass
-        x = np.array([0.21 if n == "O2" else 0.79 if n == "N2" else 0.0 for n in names])
-        w = x * np.array([res.species[n].molar_mass for n in names])
-        q_air = air.flow * w / w.sum()
-        h_air = res.mixture.species_enthalpy(np.array(air.temperature)) @ q_air
-        h_gas = res.mixture.species_enthalpy(np.array(t_mix)) @ flows
-        h_in = float(h_air)
-        total = flows + q_air
-        # temperature of the mixture: invert its enthalpy between the two stream temperatures
-        lo, hi = sorted((float(air.temperature), t_mix))
-        grid = np.linspace(lo, hi, 2001) if hi > lo else np.array([lo, lo + 1.0])
-        h_grid = res.mixture.species_enthalpy(grid) @ total
-        t_mix = float(np.interp(h_air + h_gas, h_grid, grid))
-    total = flows + q_air
-    mm = np.array([res.species[n].molar_mass for n in names])
-    moles = total / mm
-    dry = moles.sum() - (moles[names.index("H2O")] if "H2O" in names else 0.0)
-    o2 = moles[names.index("O2")] / dry if "O2" in names and dry > 0 else float("nan")
-    return {
-        "temperature_K": t_mix,
-        "flow_kg_s": float(total.sum()),
-        "O2_dry_mole_fraction": float(o2),
-        "air_ingress_kg_s": float(q_air.sum()),
-    }, h_in
-
-
 def _consumed_at_first_order(kiln: Kiln, species) -> np.ndarray:
     """For each bed species: is every reaction that consumes it of order >= 1 in its flow?
 
@@ -351,70 +296,6 @@ def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterati
                 " refine the grid (cells)",
                 iterations=iterations,
             )
-
-
-def energy_sheet(
-    kiln,
-    *,
-    solids_in,
-    to_solids,
-    reaction_heat,
-    gas_in,
-    exhaust,
-    shell_loss,
-    release,
-    heating=0.0,
-    ingress=0.0,
-) -> dict:
-    """Energy balance sheet of a converged solve, W (and the thermal efficiency, -).
-
-    Inputs: the fuel of a burner (its LHV and, for information, its HHV), the sensible
-    enthalpy of the gas and solids streams above 298.15 K and the heat of combustion as the
-    model releases it (``combustion_heat_W``: for instant burn-out the enthalpy of the
-    products entering at their adiabatic temperature less that of the unburnt streams, the
-    heat released along the flame otherwise; it differs from the LHV input only by the
-    dissociation of the products, the heat capacity of preheated streams and the gas
-    property tables, by < 0.2 %).
-    An air ingress mixing into the exhaust outside the kiln (``ingress``, its sensible
-    enthalpy, W) is an input, and the exhaust is counted after it.
-    Outputs: heat to the solids (sensible, and absorbed by the bed's reactions), shell loss,
-    exhaust (sensible enthalpy of the flue gas leaving). ``closure_W`` = in - out.
-    ``thermal_efficiency`` = heat to the solids (sensible + reaction) / fuel LHV input, or
-    over the heat the gas gives up for a kiln without a burner.
-    """
-    flame = kiln.flame
-    if flame is not None:
-        lhv, hhv = float(flame.fuel_lhv), float(flame.fuel_hhv)
-        if flame.combustion == "instant":
-            # the products enter at the adiabatic temperature: the heat of combustion is their
-            # enthalpy (the model's gas tables) less that of the unburnt streams
-            gas_sensible = float(flame.sensible_input)
-            combustion = float(gas_in) - gas_sensible
-        else:
-            combustion, gas_sensible = float(release), float(gas_in)
-    else:
-        lhv = hhv = 0.0
-        combustion, gas_sensible = float(release), float(gas_in)
-    useful = to_solids + reaction_heat
-    supplied = lhv + heating if lhv > 0 else gas_in - exhaust + release + heating
-    total_in = solids_in + gas_sensible + combustion + heating + ingress
-    total_out = solids_in + useful + shell_loss + exhaust
-    return {
-        "fuel_lhv_input_W": lhv,
-        "fuel_hhv_input_W": hhv,
-        "combustion_heat_W": combustion,
-        "electric_heating_W": float(heating),
-        "sensible_input_gas_W": gas_sensible,
-        "sensible_input_solids_W": float(solids_in),
-        "sensible_input_air_ingress_W": float(ingress),
-        "heat_to_solids_sensible_W": float(to_solids),
-        "heat_to_solids_reaction_W": float(reaction_heat),
-        "shell_loss_W": float(shell_loss),
-        "exhaust_loss_W": float(exhaust),
-        "closure_W": total_in - total_out,
-        "closure_relative": (total_in - total_out) / max(abs(total_in), 1.0),
-        "thermal_efficiency": useful / supplied if supplied else float("nan"),
-    }
 
 
 def _residence_time(res: KilnResidual, geo, qb) -> float:
