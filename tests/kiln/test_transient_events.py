@@ -88,3 +88,44 @@ def test_transient_command(tmp_path, capsys):
     rc = main(argv[:3] + [str(bad), "--until", "1 h", "--out", str(out)])
     err = capsys.readouterr().err.strip()
     assert rc == 2 and "events[0].at" in err and len(err.splitlines()) == 1
+
+
+def test_a_new_burner_state_enters_with_the_energy_of_its_flame_in_the_starting_tables():
+    # the transient's gas tables carry the dissociation heat of the flame it starts with; a
+    # fuel step changes the products, which must enter with their own energy in those tables
+    import dataclasses
+
+    import numpy as np
+    import yaml
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.kiln.events import _flame_gas
+    from rotarykiln.kiln.gas_mixture import GasMixture
+
+    data = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
+    b = data["burner"]
+    b["secondary_air"]["temperature"] = "1000 K"  # a hot flame: dissociation matters
+    # 15 % excess air (12 Nm3/h of natural gas needs about 116 Nm3/h)
+    b["primary_air"]["flow"], b["secondary_air"]["flow"] = "33 Nm3/h", "100 Nm3/h"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kiln = kiln_from_case(parse_case(data))[0]
+    flame = kiln.flame
+    names = ("N2", "O2", "CO2", "H2O")
+    d0 = flame.dissociation
+    # the starting burner: Cantera's equilibrium adiabatic temperature, unchanged
+    _, t0, _ = _flame_gas(flame.burner, 0.406, 5.5, names, d0)
+    assert t0 == flame.inlet_temperature
+    # 8 % more fuel (5 % excess air): other products; they enter where the old tables hold
+    # their enthalpy
+    richer = dataclasses.replace(flame.burner, fuel_flow=1.08 * flame.burner.fuel_flow)
+    flows, t1, _ = _flame_gas(richer, 0.406, 5.5, names, d0)
+    from rotarykiln.kiln.flame import fire
+
+    new = fire(richer, 0.406, 5.5)
+    frozen = GasMixture.of(names).species_enthalpy(np.array(new.products.adiabatic_temperature))
+    tables = GasMixture.of(names, None, d0).species_enthalpy(np.array(t1))
+    assert tables @ flows == pytest.approx(frozen @ flows, rel=1e-6)
+    # close to the new flame's own equilibrium temperature (the tables' dissociation differs)
+    assert t1 == pytest.approx(new.adiabatic_temperature, abs=15.0)
+    assert t1 < new.products.adiabatic_temperature - 50.0

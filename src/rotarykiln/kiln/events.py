@@ -384,8 +384,15 @@ class Inputs:
 
 
 @lru_cache(maxsize=256)
-def _flame_gas(burner, diameter, length, gas_names):
-    """Gas inlet flows (per ``gas_names``), temperature and heat release of ``burner``."""
+def _flame_gas(burner, diameter, length, gas_names, dissociation=None):
+    """Gas inlet flows (per ``gas_names``), temperature and heat release of ``burner``.
+
+    ``dissociation``: the dissociation heat the transient's gas tables carry (that of the
+    burner it started with, or None). The products of another burner state enter at the
+    temperature at which those tables hold their enthalpy (the frozen products at their frozen
+    adiabatic temperature), so the energy fed is the new flame's even though the tables'
+    dissociation heat is the old products'.
+    """
     from rotarykiln.kiln.flame import fire
     from rotarykiln.materials.gas import molar_mass
 
@@ -397,7 +404,28 @@ def _flame_gas(burner, diameter, length, gas_names):
         mass[key] = mass.get(key, 0.0) + x * molar_mass(f"{name}:1")
     total = sum(mass.values())
     flows = np.array([p.mass_flow * mass.get(s, 0.0) / total for s in gas_names])
-    return flows, float(flame.inlet_temperature), float(flame.heat_release)
+    t_in = float(flame.inlet_temperature)
+    if (
+        dissociation is not None
+        and flame.combustion == "instant"
+        and flame.dissociation is not dissociation
+    ):
+        t_in = _inlet_temperature(flows, gas_names, p.adiabatic_temperature, dissociation)
+    return flows, t_in, float(flame.heat_release)
+
+
+def _inlet_temperature(flows, gas_names, t_frozen: float, dissociation) -> float:
+    """Temperature (K) at which gas tables carrying ``dissociation`` hold the enthalpy of the
+    frozen products ``flows`` (kg/s per ``gas_names``) at ``t_frozen``."""
+    from rotarykiln.kiln.gas_mixture import GasMixture
+
+    present = [i for i, q in enumerate(flows) if q > 0]
+    names = tuple(gas_names[i] for i in present)
+    q = np.asarray(flows, dtype=float)[present]
+    target = float(GasMixture.of(names).species_enthalpy(np.array(t_frozen)) @ q)
+    grid = np.linspace(200.0, t_frozen, 4001)
+    h = GasMixture.of(names, None, dissociation).species_enthalpy(grid) @ q
+    return float(np.interp(target, h, grid))
 
 
 class Schedule:
@@ -484,7 +512,9 @@ class Schedule:
                         "events",
                         message="events: the burner's air flows reach 0 (a flame needs air)",
                     )
-                gas, t_gas, release = _flame_gas(burner, 2.0 * k.radius, k.length, self.gas_names)
+                gas, t_gas, release = _flame_gas(
+                    burner, 2.0 * k.radius, k.length, self.gas_names, k.flame.dissociation
+                )
         else:
             gas = self.value("gas_flow", t, right) * self.gas_fractions
             t_gas, release = self.value("gas_inlet_temperature", t, right), k.heat_release
