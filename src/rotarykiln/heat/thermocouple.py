@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.errors import InputError, check_nonnegative, check_positive
+from rotarykiln.errors import InputError, check_nonnegative, check_positive, check_range
 from rotarykiln.heat.wall import churchill_bernstein_nusselt
 from rotarykiln.materials.gas import GasPropertyTable, air_table
 
@@ -41,8 +41,7 @@ _ITERATIONS = 50
 
 def _checked(diameter, emissivity, velocity, temperatures):
     check_positive("diameter", diameter, "m")
-    if not (np.isfinite(emissivity) and 0.0 < emissivity <= 1.0):
-        raise InputError("emissivity", emissivity, "in (0, 1]")
+    check_range("emissivity", emissivity, 0.0, 1.0, closed_high=True)
     check_nonnegative("velocity", velocity, "m/s")
     for name, t in temperatures.items():
         check_positive(name, t, "K")
@@ -83,9 +82,9 @@ def bare_thermocouple_temperature(
         Radiation temperature of the surfaces the junction sees.
     velocity : float or array, m/s
         Gas velocity across the junction.
-    diameter : float, m
-        Junction (wire or sheath) diameter.
-    emissivity : float, -
+    diameter : float or array, m
+        Junction (wire or sheath) diameter, > 0.
+    emissivity : float or array, -
         Junction emissivity, in (0, 1].
     gas : GasPropertyTable, optional
         Gas properties (default: air, close to a flue gas at high excess air).
@@ -96,7 +95,9 @@ def bare_thermocouple_temperature(
     Returns
     -------
     float or array, K
-        The reading. Range: Churchill-Bernstein holds for Re Pr > 0.2.
+        The reading. Range: Churchill-Bernstein holds for Re Pr > 0.2 (in still gas its
+        Nu = 0.3 understates h, natural convection being left out, and so overstates the
+        radiation error); the gas table is fitted over 200-3200 K.
 
     Examples
     --------
@@ -156,7 +157,8 @@ def gas_temperature_from_thermocouple(
     .. math:: T_g = T_{tc} + \frac{\varepsilon\,\sigma\,(T_{tc}^4 - T_s^4)}{h(T_f)},
               \qquad T_f = (T_g + T_{tc})/2
 
-    by fixed-point iteration on the film temperature (h varies slowly with it).
+    by fixed-point iteration on the film temperature (h varies slowly with it, so each step
+    contracts the error many times over).
 
     Parameters
     ----------
@@ -164,14 +166,16 @@ def gas_temperature_from_thermocouple(
         Reading.
     t_surroundings : float or array, K
     velocity : float or array, m/s
-    diameter : float, m
-    emissivity : float, -
+    diameter : float or array, m
+    emissivity : float or array, -
     gas : GasPropertyTable, optional
     pressure : float, Pa
 
     Returns
     -------
     float or array, K
+        Raises :class:`~rotarykiln.errors.InputError` (field ``t_tc``) for a reading so far
+        below hot surroundings that no gas above 0 K gives it.
 
     Examples
     --------
@@ -193,6 +197,15 @@ def gas_temperature_from_thermocouple(
     tg = tc.copy()
     for _ in range(_ITERATIONS):
         tg_new = tc + loss / _h(gas, 0.5 * (tg + tc), u, diameter, pressure)
+        if not np.all(tg_new > 0.0):  # hot surroundings, little convection: unreachable
+            bad = ~(tg_new > 0.0)
+            t_bad, ts_bad = (float(np.broadcast_to(v, bad.shape)[bad].flat[0]) for v in (tc, ts))
+            raise InputError(
+                "t_tc",
+                f"{t_bad:.6g} K",
+                f"reachable (surroundings at {ts_bad:.6g} K: no gas above 0 K cools the "
+                "junction that far)",
+            )
         if np.all(np.abs(tg_new - tg) < 1e-10 * tg):
             tg = tg_new
             break
