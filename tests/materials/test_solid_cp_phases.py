@@ -50,9 +50,25 @@ def test_quartz_cp_against_janaf_and_nasa(sand, nasa):
     assert float(sand.cp(1200.0)) * M_SIO2 < 72.0
 
 
-def test_quartz_phase_cp_jumps_at_847_and_apparent_cp_is_continuous(sand):
-    below, above = sand.cp([846.999, 847.001], latent=False) * M_SIO2
-    assert below == pytest.approx(76.5, abs=0.1) and above == pytest.approx(67.4, abs=0.1)
+def _phase_cp(sand, k, T):
+    """c_p (J/(mol K)) of phase ``k`` of the sand (0 alpha, 1 beta quartz), its own fit."""
+    return float(sand._pieces[0][k].cp_molar(np.asarray(float(T))))
+
+
+def test_quartz_phase_cp_blends_across_847_and_apparent_cp_is_continuous(sand):
+    # the phases' own values at 847 K: alpha 76.5, beta 67.4 J/(mol K)
+    assert _phase_cp(sand, 0, 847.0) == pytest.approx(76.5, abs=0.1)
+    assert _phase_cp(sand, 1, 847.0) == pytest.approx(67.4, abs=0.1)
+    # without the latent bump: each phase's value outside the 10 K window, blended by the
+    # phase fraction inside it (the mean at 847 K), continuous: no jump for the closures
+    below, above = sand.cp([841.9, 852.1], latent=False) * M_SIO2
+    assert below == pytest.approx(_phase_cp(sand, 0, 841.9), rel=1e-12)
+    assert above == pytest.approx(_phase_cp(sand, 1, 852.1), rel=1e-12)
+    mid = float(sand.cp(847.0, latent=False)) * M_SIO2
+    assert mid == pytest.approx(0.5 * (_phase_cp(sand, 0, 847.0) + _phase_cp(sand, 1, 847.0)))
+    for T in (842.0, 847.0, 852.0):
+        a, b = sand.cp([T - 1e-7, T + 1e-7], latent=False)
+        assert a == pytest.approx(b, rel=1e-6), T
     # the apparent cp (dh/dT) is continuous: at the window edges and at the centre
     for T in (842.0, 847.0, 852.0):
         a, b = sand.cp([T - 1e-7, T + 1e-7])
@@ -61,16 +77,17 @@ def test_quartz_phase_cp_jumps_at_847_and_apparent_cp_is_continuous(sand):
     assert sand.cp(841.0) == sand.cp(841.0, latent=False)
     assert sand.cp(853.0) == sand.cp(853.0, latent=False)
     # inside it, the latent heat shows as a bump of peak 1.5 L / w
-    peak = float(sand.cp(847.0) - 0.5 * sum(sand.cp([847.0 - 1e-9, 847.0 + 1e-9], latent=False)))
+    peak = float(sand.cp(847.0) - sand.cp(847.0, latent=False))
     assert peak * M_SIO2 == pytest.approx(1.5 * L_QUARTZ / 10.0, rel=0.01)
 
 
 def test_enthalpy_is_integral_of_cp_plus_latent_heat(sand, nasa):
     assert float(sand.enthalpy(298.15)) == 0.0
-    sensible = quad(lambda t: float(sand.cp(t, latent=False)), 298.15, 847.0)[0]
-    sensible += quad(lambda t: float(sand.cp(t, latent=False)), 847.0, 1200.0)[0]
+    # the sharp transition: alpha quartz to 847 K, then beta, plus the latent heat
+    sensible = quad(lambda t: _phase_cp(sand, 0, t), 298.15, 847.0)[0]
+    sensible += quad(lambda t: _phase_cp(sand, 1, t), 847.0, 1200.0)[0]
     h = float(sand.enthalpy(1200.0))
-    assert h == pytest.approx(sensible + L_QUARTZ / M_SIO2, rel=1e-10)
+    assert h == pytest.approx((sensible + L_QUARTZ) / M_SIO2, rel=1e-10)
     # and the apparent cp integrates to h everywhere, through the window
     for T in (845.0, 847.0, 850.0, 1200.0):
         apparent = quad(lambda t: float(sand.cp(t)), 298.15, T, points=[842.0, 847.0, 852.0])[0]

@@ -28,9 +28,11 @@ a logistic (tanh) step never reaches 0 or 1, so :math:`h(298.15\,K)` would not b
 the enthalpy outside the window would differ from the tabulated one. The cubic step has compact
 support: outside the window :math:`h` equals the sharp-transition enthalpy exactly, inside it
 :math:`h` is continuously differentiable and :math:`c_p` is continuous (the latent heat appears
-as a bump of peak :math:`1.5L/w` in :meth:`Solid.cp`; ``Solid.cp(T, latent=False)`` gives the
-tabulated phase value instead, jumping at :math:`T_{tr}`). 10 K is narrow against the bed
-heating in a kiln cell and comparable to the spread of the real (lambda-type) quartz transition.
+as a bump of peak :math:`1.5L/w` in :meth:`Solid.cp`; ``Solid.cp(T, latent=False)`` leaves the
+bump out: the phases' values blended by the phase fraction, :math:`(1 - s)\,c_{p,k} +
+s\,c_{p,k+1}`, continuous too, so that no closure that uses it makes the kiln residual jump).
+10 K is narrow against the bed heating in a kiln cell and comparable to the spread of the real
+(lambda-type) quartz transition.
 A boundary without a transition switches piece sharply (the pieces of a fit match there).
 
 :meth:`Solid.enthalpy` is thus the exact integral of :meth:`Solid.cp`, which keeps kiln energy
@@ -245,10 +247,11 @@ class Solid:
                 x = np.clip((T - (tb - 0.5 * w)) / w, 0.0, 1.0)
                 s = x * x * (3.0 - 2.0 * x)
                 dh = h_b - h
+                cp_mixed = cp + s * (cp_b - cp)  # the two phases' c_p by phase fraction
                 if latent:
-                    cp = cp + s * (cp_b - cp) + (6.0 / w) * x * (1.0 - x) * dh
+                    cp = cp_mixed + (6.0 / w) * x * (1.0 - x) * dh
                 else:
-                    cp = np.where(above, cp_b, cp)
+                    cp = cp_mixed  # continuous: a jump here made the kiln residual jump
                 h = h + s * dh
             else:
                 cp = np.where(above, cp_b, cp)
@@ -305,14 +308,15 @@ class Solid:
         return warn_out_of_range(f"{self.name} temperature [K]", T, rng[0], rng[1], source)
 
     def phase_cp(self, T):
-        """Specific heat of the stable phase, J/(kg K), without a transition's latent bump: the
+        """Specific heat without a transition's latent bump, J/(kg K): the stable phase's, and
+        inside a transition window the phases' blended by the phase fraction (continuous). The
         heat capacity the covered-wall contact (penetration) models take.
 
         Examples
         --------
         >>> s = load_solid("sand")
         >>> round(float(s.phase_cp(847.0)) / float(s.cp(847.0)), 2)  # the latent bump is left out
-        0.37
+        0.4
         """
         return self.cp(T, latent=False)
 
