@@ -196,3 +196,33 @@ def test_a_solution_hotter_than_every_source_is_refused():
     hot[4] = kiln.gas_inlet_temperature + 50.0  # an overshooting face
     with pytest.raises(ConvergenceError, match="unphysical solution: T_bed"):
         _check_no_hotter_than_sources(res, hot, ok, np.full((10, 4), 400.0), 3)
+
+
+def test_a_kiln_hot_enough_to_react_at_once_converges(monkeypatch):
+    # a 1099 K flue-gas jacket over 11.9 kg/h of wood (counter-current jacket, plug flow):
+    # the reaction-free bed is so hot at the end that ramping the rates from 0 fails; the
+    # solver then ramps the temperature the rates see (found by a random campaign)
+    import yaml
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.kiln import solve as solve_mod
+    from rotarykiln.kiln.build import kiln_from_case
+
+    d = yaml.safe_load(builtin_case_path("rotary_pyrolysis").read_text())
+    d["wall"]["jacket"].update(temperature="1099 K", counter_current=True)
+    d["operation"]["feed"] = "11.9 kg/h"
+    kiln, _ = kiln_from_case(parse_case(d))
+    capped = []
+    real_capped = solve_mod.KilnResidual.rates
+
+    def spy(self, *args, **kw):
+        capped.append(np.isfinite(self.rate_temperature_cap))
+        return real_capped(self, *args, **kw)
+
+    monkeypatch.setattr(solve_mod.KilnResidual, "rates", spy)
+    sol = solve_kiln(kiln, 200)
+    assert any(capped)  # the rate-temperature continuation was used ...
+    assert abs(sol.energy_closure) < 1e-6  # ... and the converged solve is uncapped
+    assert max(sol.element_closure.values()) < 1e-8
+    assert sol.summary()["conversion_wood"] > 0.999

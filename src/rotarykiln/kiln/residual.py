@@ -54,6 +54,13 @@ from rotarykiln.materials.gas import T_REF
 __all__ = ["KilnResidual", "T_FLOOR"]
 
 T_FLOOR = 150.0  # K, temperatures are clipped here inside property evaluations
+RATE_CAP_WIDTH = 5.0  # K, width of the smooth minimum of the rate-temperature continuation
+
+
+def _capped(T, cap: float):
+    """Smooth minimum of ``T`` and ``cap`` (K): ``T`` well below the cap, ``cap`` well above."""
+    w = RATE_CAP_WIDTH
+    return -w * np.logaddexp(-T / w, -cap / w)
 
 
 class KilnResidual:
@@ -150,6 +157,9 @@ class KilnResidual:
         self.gas_out = slice(None, -1) if k.counter_current else slice(1, None)
         self.gas_in_face = -1 if k.counter_current else 0
         self.reaction_scale = 1.0  # continuation parameter on the reaction rates
+        # continuation parameter: the rates are evaluated at most at about this temperature
+        # (a smooth minimum, RATE_CAP_WIDTH wide), K; inf outside the continuation
+        self.rate_temperature_cap = np.inf
         self.radiation_scale = 1.0  # continuation parameter on radiation
         self.release_scale = 1.0  # continuation parameter on the heat released in the gas
         self.q_ref = 1.0
@@ -263,9 +273,12 @@ class KilnResidual:
                 tb if tb_out is None else tb_out, shape
             ).reshape(flat),
         }
+        t_bed, t_gas = np.maximum(tb, T_FLOOR), np.maximum(tg, T_FLOOR)
+        if np.isfinite(self.rate_temperature_cap):
+            t_bed, t_gas = (_capped(t, self.rate_temperature_cap) for t in (t_bed, t_gas))
         st = ChemState(
-            np.maximum(tb, T_FLOOR).reshape(flat),
-            np.maximum(tg, T_FLOOR).reshape(flat),
+            t_bed.reshape(flat),
+            t_gas.reshape(flat),
             bed,
             holdup,
             pp,

@@ -21,6 +21,10 @@ ENERGY_RTOL = 1e-6
 SPECIES_STEP_FLOOR = 1e-6
 #: Bed temperature (K) above which the initial guess holds no liquid water (boiling drying).
 BOILING_GUESS = 373.15
+#: Rate-temperature continuation (the last fallback): the rates first see at most the feed
+#: temperature plus RATE_CAP_START, then up to the hottest source plus RATE_CAP_MARGIN, K.
+RATE_CAP_START = 50.0
+RATE_CAP_MARGIN = 200.0
 #: Grid sequencing (steady.newton_sequenced) for kilns with reactions, and for inert kilns
 #: above this many cells (below it the linear guess converges in ~7 Newton steps anyway).
 SEQUENCE_INERT_MIN = 200
@@ -321,12 +325,30 @@ def _continuation(res: KilnResidual):
 
     radiation_ramp = steady.ramp(set_radiation)
     reactions = steady.ramp(set_reactions, adaptive=True)
+    t_low = res.kiln.feed_temperature + RATE_CAP_START
+    t_high = _hot_temperature(res) + RATE_CAP_MARGIN
+
+    def set_cap(value):
+        res.rate_temperature_cap = np.inf if value >= 1.0 else t_low + value * (t_high - t_low)
+
+    temperatures = steady.ramp(set_cap, adaptive=True)
 
     def run(F, x0, scale, kw):
         set_reactions(0.0)
         x, total = steady.newton_with_continuation(F, x0, scale, radiation_ramp, **kw)
-        x, more = reactions(F, x, scale, kw)
+        try:
+            x_r, more = reactions(F, x, scale, kw)
+        except ConvergenceError:
+            # a kiln hot enough to react at once where the reaction-free bed is hottest: ramp
+            # instead the temperature the rates see, from just above the feed to the hottest
+            # source, with the full rates (each stage heats the bed a little further)
+            set_reactions(1.0)
+            set_cap(0.0)
+            try:
+                x_r, more = temperatures(F, x, scale, kw)
+            finally:
+                set_cap(1.0)
         set_reactions(1.0)
-        return x, total + more
+        return x_r, total + more
 
     return run
