@@ -10,6 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from rotarykiln.kiln.flame import AIR
+from rotarykiln.materials.gas import parse_composition
+
 __all__ = ["energy_sheet", "exhaust_state"]
 
 
@@ -44,8 +47,9 @@ def exhaust_state(res, flows, temperature: float) -> tuple[dict, float]:
     h_in = 0.0
     t_mix = float(temperature)
     if air is not None and air.flow > 0:
-        # the burner's air (flame.AIR: O2 0.21, N2 0.79 by mole), by mass
-        x = np.array([0.21 if n == "O2" else 0.79 if n == "N2" else 0.0 for n in names])
+        # the burner's air (flame.AIR, by mole), by mass
+        air_x = dict(parse_composition(AIR))
+        x = np.array([air_x.get(n, 0.0) for n in names])
         w = x * np.array([res.species[n].molar_mass for n in names])
         q_air = air.flow * w / w.sum()
         h_air = res.mixture.species_enthalpy(np.array(air.temperature)) @ q_air
