@@ -321,8 +321,10 @@ class Burner(Section):
     molar flows ("0.1 mol/s") or normal volume flows ("12 Nm3/h", "0.83 NL/s" at 0 degC and
     1 atm; "Sm3/h" at 15 degC); a plain volume flow ("1.42 L/s") needs
     ``reference_temperature`` (and ``reference_pressure``, default 1 atm).
-    ``combustion``: ``instant`` (burn-out at the burner) or ``burnout`` (mixing-limited along
-    the flame, which needs ``flame_length`` or ``nozzle_diameter``).
+    ``combustion``: ``instant`` (burn-out at the burner), ``burnout`` (mixing-limited along
+    the flame, which needs ``flame_length`` or ``nozzle_diameter``) or ``stirred`` (burn-out in
+    a well-stirred recirculation zone, which needs ``recirculation_length`` or
+    ``nozzle_diameter``).
     ``soot_volume_fraction``: a luminous flame (soot volume fraction f_v over the flame length,
     e.g. 5e-8 for natural gas; default 0, a non-luminous flame), which needs the flame length.
     ``products``: ``equilibrium`` (default: the products dissociate at equilibrium, which
@@ -343,9 +345,10 @@ class Burner(Section):
     reference_temperature: Temperature | None = None
     reference_pressure: Pressure | None = None
     nozzle_diameter: Length | None = None
-    combustion: Literal["instant", "burnout"] = "instant"
+    combustion: Literal["instant", "burnout", "stirred"] = "instant"
     products: Literal["equilibrium", "complete"] = "equilibrium"
     flame_length: Length | None = None
+    recirculation_length: Length | None = None
     soot_volume_fraction: SootFraction = 0.0
     air_ingress: BurnerAir | None = None
 

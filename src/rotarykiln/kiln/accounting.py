@@ -106,7 +106,7 @@ def energy_sheet(
     flame = kiln.flame
     if flame is not None:
         lhv, hhv = float(flame.fuel_lhv), float(flame.fuel_hhv)
-        if flame.combustion == "instant":
+        if flame.burns_at_inlet:
             # the products enter at the adiabatic temperature: the heat of combustion is their
             # enthalpy (the model's gas tables) less that of the unburnt streams
             gas_sensible = float(flame.sensible_input)

@@ -250,6 +250,7 @@ def _inlet_gas(case) -> dict:
             gas_inlet_temperature=flame.inlet_temperature,
             heat_release=flame.heat_release,
             heat_release_profile=flame.release_profile(length, case.operation.counter_current),
+            stirred_zone=flame.stirred_zone(length, case.operation.counter_current),
             flame=flame,
         )
         return out
@@ -391,6 +392,7 @@ def burner_from_case(section, counter_current: bool = True) -> Burner:
         ),
         ingress_at_burner=not counter_current,
         products=section.products,
+        recirculation_length=section.recirculation_length,
     )
 
 

@@ -405,11 +405,7 @@ def _flame_gas(burner, diameter, length, gas_names, dissociation=None):
     total = sum(mass.values())
     flows = np.array([p.mass_flow * mass.get(s, 0.0) / total for s in gas_names])
     t_in = float(flame.inlet_temperature)
-    if (
-        dissociation is not None
-        and flame.combustion == "instant"
-        and flame.dissociation is not dissociation
-    ):
+    if dissociation is not None and flame.burns_at_inlet and flame.dissociation is not dissociation:
         t_in = _inlet_temperature(flows, gas_names, p.adiabatic_temperature, dissociation)
     return flows, t_in, float(flame.heat_release)
 

@@ -32,6 +32,11 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
   - ``instant`` (default): the fuel burns completely where it enters (Hanein et al. 2017, the
     SimCem kiln): the gas enters at the adiabatic temperature of the fully mixed products. It
     is the upper bound of the mixed-cup gas temperature the mixing model allows;
+  - ``stirred``: the recirculation zone of a confined jet (Thring-Newby parameter below
+    0.75: flames.md section 7's recommended default) as a well-stirred reactor: the fuel burns
+    out inside it, and its gas is mixed over the recirculation length :math:`x_w` (given as
+    ``recirculation_length`` or from the nozzle) by an axial conductance strong enough for a
+    zone Peclet number of 0.1; plug flow beyond. It needs :math:`x_w`;
   - ``burnout``: mixing-limited burn-out along the flame, the self-similar jet profile of
     flames.md section 2, with :math:`\xi = x/L_f` and :math:`m = 1.4`
 
@@ -88,7 +93,9 @@ __all__ = [
 #: Dry air by mole, as burnt by :func:`rotarykiln.materials.gas.burn_fuel`.
 AIR = "O2:0.21, N2:0.79"
 AIR_MOLAR_MASS = 0.21 * 0.031998 + 0.79 * 0.0280134  # kg/mol
-COMBUSTION_MODELS = ("instant", "burnout")
+COMBUSTION_MODELS = ("instant", "burnout", "stirred")
+#: Peclet number u x_w / D of a stirred recirculation zone: well mixed (D = 10 u x_w).
+STIRRED_PECLET = 0.1
 PRODUCT_MODELS = ("equilibrium", "complete")
 ENTRAINMENT = 0.32  # Ricou & Spalding (1961), far field
 JET_SPREAD = 0.2  # half-width growth rate of a round jet, flames.md section 2
@@ -138,6 +145,7 @@ class Burner:
     ingress_air: AirStream = AirStream(0.0)
     ingress_at_burner: bool = False
     products: str = "equilibrium"
+    recirculation_length: float | None = None
 
     def __post_init__(self):
         check_positive("burner.fuel_flow", self.fuel_flow, "kg/s")
@@ -154,6 +162,8 @@ class Burner:
             check_positive("burner.nozzle_diameter", self.nozzle_diameter, "m")
         if self.flame_length is not None:
             check_positive("burner.flame_length", self.flame_length, "m")
+        if self.recirculation_length is not None:
+            check_positive("burner.recirculation_length", self.recirculation_length, "m")
         check_positive("burner.entrainment", self.entrainment)
 
     @property
@@ -216,20 +226,41 @@ class Flame:
         return self.products.adiabatic_temperature
 
     @property
+    def burns_at_inlet(self) -> bool:
+        """Whether the fuel's heat enters with the gas (``instant``, ``stirred``: the products
+        at their adiabatic temperature) rather than released along the kiln (``burnout``)."""
+        return self.combustion in ("instant", "stirred")
+
+    @property
     def inlet_temperature(self) -> float:
         """Temperature at which the gas enters the kiln's gas balance, K."""
-        if self.combustion == "instant":
+        if self.burns_at_inlet:
             return self.adiabatic_temperature
         return self.products.inlet_temperature
+
+    def stirred_zone(self, length: float, counter_current: bool):
+        r"""(z_start, z_end, K) of the ``stirred`` model's recirculation zone, or None.
+
+        The zone is the recirculation length from the burner end (``recirculation_length``
+        of the burner, or Thring-Newby's :math:`x_w`), at most the kiln; K (W m/K) is the axial
+        conductance of a well-stirred gas, :math:`\dot m c_p x_w / Pe` with Pe =
+        :data:`STIRRED_PECLET`, the products' c_p at the adiabatic temperature.
+        """
+        if self.combustion != "stirred":
+            return None
+        x_w = min(float(self.recirculation_length), length)
+        p = self.products
+        k = p.mass_flow * float(p.table.cp(self.adiabatic_temperature)) * x_w / STIRRED_PECLET
+        return (length - x_w, length, k) if counter_current else (0.0, x_w, k)
 
     @property
     def heat_release(self) -> float:
         """Heat released inside the kiln's gas balance, W (0 for instant burn-out)."""
-        return 0.0 if self.combustion == "instant" else self.products.heat_release
+        return 0.0 if self.burns_at_inlet else self.products.heat_release
 
     def release_profile(self, length: float, counter_current: bool):
         """Weights of the heat release over cells (callable of cell centres z, m), or None."""
-        if self.combustion == "instant":
+        if self.burns_at_inlet:
             return None
         return BurnoutProfile(length, float(self.flame_length), counter_current)
 
@@ -500,6 +531,24 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
         jet, hwh = _jet_numbers(burner, fuel, mm_fuel, lam_p, kiln_diameter)
         if flame_length is None:
             flame_length = hwh
+    if burner.recirculation_length is not None:
+        jet["recirculation_length"] = float(burner.recirculation_length)
+    if burner.combustion == "stirred" and jet["recirculation_length"] is None:
+        raise InputError(
+            "burner.recirculation_length",
+            None,
+            "given, or a burner.nozzle_diameter to compute it (the stirred model needs it)",
+        )
+    if (
+        burner.recirculation_length is not None
+        and kiln_length is not None
+        and burner.recirculation_length > kiln_length
+    ):
+        raise InputError(
+            "burner.recirculation_length",
+            f"{burner.recirculation_length:.6g} m",
+            f"<= the kiln length ({kiln_length:.6g} m)",
+        )
     if burner.combustion == "burnout" and flame_length is None:
         raise InputError(
             "burner.flame_length",

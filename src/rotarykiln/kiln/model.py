@@ -147,6 +147,9 @@ class Kiln:
     ``soot``: (f_v, z_start, z_end), a luminous zone (a sooting flame) of soot volume
     fraction f_v between z_start and z_end (m), whose grey soot emissivity adds to the gas's
     (:func:`rotarykiln.heat.gas_radiation.soot_emissivity`); None: a non-luminous gas.
+    ``stirred_zone``: (z_start, z_end, K), the burner's recirculation zone, a well-stirred
+    gas: its gas nodes exchange heat by an axial conductance K (W m/K, strong enough for a zone
+    Peclet number of 0.1), conserving energy; None: plug-flow gas throughout.
     ``bed_dispersion`` (m2/s): axial dispersion coefficient of the bed inside the balances
     (:mod:`rotarykiln.kiln.dispersion`; 0: plug flow; e.g. :math:`u L / Pe` with Pe from
     :mod:`rotarykiln.rtd.correlations`).
@@ -191,6 +194,7 @@ class Kiln:
     bed_dispersion: float = 0.0
     heaters: tuple = ()
     soot: tuple[float, float, float] | None = None
+    stirred_zone: tuple[float, float, float] | None = None
 
     def __post_init__(self):
         check_positive("kiln.length", self.length, "m")

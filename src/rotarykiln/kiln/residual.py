@@ -155,6 +155,15 @@ class KilnResidual:
         self.exchange = CrossSectionExchange.of(k, g, bed, k.gas_emissivity_law)
         # faces where each cell's gas leaves: j (counter-current) or j+1 (co-current)
         self.gas_out = slice(None, -1) if k.counter_current else slice(1, None)
+        # a burner's stirred recirculation zone: which neighbouring gas nodes mix, and K/dz
+        self.stirred = None
+        zone = getattr(k, "stirred_zone", None)
+        if zone is not None:
+            z0, z1, k_mix = zone
+            nodes = self.z_nodes[self.gas_out]
+            inside = (nodes >= z0 - 1e-9 * k.length) & (nodes <= z1 + 1e-9 * k.length)
+            self.stirred = ((inside[:-1] & inside[1:]).astype(float), k_mix / self.dz)
+            self.stirred_cells = inside
         self.gas_in_face = -1 if k.counter_current else 0
         self.reaction_scale = 1.0  # continuation parameter on the reaction rates
         # continuation parameter: the rates are evaluated at most at about this temperature
@@ -303,6 +312,10 @@ class KilnResidual:
         tgn = np.maximum(tg_n, T_FLOOR)
         tb = 0.5 * (tbn[..., :-1] + tbn[..., 1:])
         tg = 0.5 * (tgn[..., :-1] + tgn[..., 1:])
+        if self.stirred is not None:
+            # a stirred cell is a tank: its gas is at the temperature it leaves at, not the
+            # mean of its faces (its inlet face may be the burner's products, unmixed)
+            tg = np.where(self.stirred_cells, np.maximum(x[..., 1], T_FLOOR), tg)
         tl = np.maximum(x[..., 2 : 2 + self.n_wall], T_FLOOR)  # inner wall (.. shell)
         tw = tl[..., 0]
         g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
@@ -347,6 +360,8 @@ class KilnResidual:
             r_bed = r_bed - disp_energy
         sign = 1.0 if self.kiln.counter_current else -1.0  # downstream minus upstream
         r_gas = sign * (Hg[..., :-1] - Hg[..., 1:]) + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
+        if self.stirred is not None:
+            r_gas = r_gas - self._stirred_gain(x[..., 1])
         parts = [r_bed[..., None], r_gas[..., None]] + [(dz * r)[..., None] for r in wall_rows]
         if self.nb:
             qv = qb[..., self.bed_pos]
@@ -382,6 +397,20 @@ class KilnResidual:
         fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
         # production by the bed reactions (the solver's global balance prices it at T_bed)
         return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)
+
+    def _stirred_gain(self, t_gas):
+        r"""Heat (W) each cell's gas gains by the axial mixing of a stirred recirculation zone.
+
+        The gas unknowns (the temperature where each cell's gas leaves) of neighbouring cells
+        whose nodes both lie in the zone exchange :math:`K (T_{j+1} - T_j)/\Delta z`; the
+        exchange is internal, so it conserves energy (no flux through the zone's ends).
+        """
+        pair, k_dz = self.stirred
+        flux = k_dz * pair * (t_gas[..., 1:] - t_gas[..., :-1])  # into j from j + 1
+        gain = np.zeros_like(t_gas)
+        gain[..., :-1] += flux
+        gain[..., 1:] -= flux
+        return gain
 
     def __call__(self, x):
         return self.evaluate(x)
