@@ -533,38 +533,10 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
             flame_length = hwh
     if burner.recirculation_length is not None:
         jet["recirculation_length"] = float(burner.recirculation_length)
-    if burner.combustion == "stirred" and jet["recirculation_length"] is None:
-        raise InputError(
-            "burner.recirculation_length",
-            None,
-            "given, or a burner.nozzle_diameter to compute it (the stirred model needs it)",
-        )
-    if (
-        burner.recirculation_length is not None
-        and kiln_length is not None
-        and burner.recirculation_length > kiln_length
-    ):
-        raise InputError(
-            "burner.recirculation_length",
-            f"{burner.recirculation_length:.6g} m",
-            f"<= the kiln length ({kiln_length:.6g} m)",
-        )
-    if burner.combustion == "burnout" and flame_length is None:
-        raise InputError(
-            "burner.flame_length",
-            None,
-            "given, or a burner.nozzle_diameter to compute it (the burnout model needs it)",
-        )
-    if (
-        burner.flame_length is not None
-        and kiln_length is not None
-        and burner.flame_length > kiln_length
-    ):
-        raise InputError(
-            "burner.flame_length",
-            f"{burner.flame_length:.6g} m",
-            f"<= the kiln length ({kiln_length:.6g} m)",
-        )
+    stirred, burnout = burner.combustion == "stirred", burner.combustion == "burnout"
+    x_w = jet["recirculation_length"]
+    _check_length("recirculation", burner.recirculation_length, x_w, stirred, kiln_length)
+    _check_length("flame", burner.flame_length, flame_length, burnout, kiln_length)
     dissociation = t_eq = None
     if burner.products == "equilibrium":
         comp = [(k, x) for k, x in products.composition if k in DISSOCIATION_SPECIES]
@@ -584,6 +556,18 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
         combustion=burner.combustion,
         **jet,
     )
+
+
+def _check_length(what: str, given, value, needed: bool, kiln_length) -> None:
+    """Refuse a ``burner.<what>_length`` override longer than the kiln, or a model that needs
+    the length (``stirred``: recirculation, ``burnout``: flame) without it."""
+    field = f"burner.{what}_length"
+    model = "stirred" if what == "recirculation" else "burnout"
+    if needed and value is None:
+        accepted = f"given, or a burner.nozzle_diameter to compute it (the {model} model needs it)"
+        raise InputError(field, None, accepted)
+    if given is not None and kiln_length is not None and given > kiln_length:
+        raise InputError(field, f"{given:.6g} m", f"<= the kiln length ({kiln_length:.6g} m)")
 
 
 def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
