@@ -7,21 +7,16 @@ import re
 from typing import Any
 
 import plotly.graph_objects as go
+from matplotlib.colors import to_hex
 
 from rotarykiln.errors import InputError
+from rotarykiln.kiln.profiles import COLOURS as PROFILE_COLOURS
 from rotarykiln.units import to_si
 
 __all__ = ["composition_figure", "measured_points", "temperature_figure"]
 
-# the colours of the matplotlib figures (rotarykiln.kiln.profiles.COLOURS): brown bed, red gas,
-# blue inner wall, grey shell
-COLOURS = {
-    "bed": "#8c564b",
-    "gas": "#d62728",
-    "wall": "#1f77b4",
-    "shell": "#7f7f7f",
-    "gas_wall": "#ff7f0e",
-}
+# the colours of the matplotlib figures, as Plotly takes them: one palette for both
+COLOURS = {key: to_hex(colour) for key, colour in PROFILE_COLOURS.items()}
 SYMBOLS = {"gas": "circle-open", "bed": "square-open", "wall": "triangle-up-open"}
 NAMES = {
     "bed": "bed",
