@@ -6,7 +6,7 @@ assumption the same for every trial, see docs/validation.md). The default burner
 instant burn-out at the burner (Hanein et al. 2017). Scored: RMSE of bed, gas 2.5 cm above the
 bed (raw gas temperature, no thermocouple correction) and inner wall, mean of the three trials.
 
-Issue 10 targets bed <= 25 K, gas <= 35 K, wall <= 30 K. This model reaches about 32 / 25 / 30 K;
+Issue 10 targets bed <= 25 K, gas <= 35 K, wall <= 30 K. This model reaches 30.3 / 24.6 / 29.3 K;
 the bed target is not met (the feed-end bed readings at z = 0.11 m are 35-115 K above what a
 feed at ambient can reach there, and T4's mid-kiln bed and wall are 35-45 K high). The bounds
 below are the achieved values plus a margin of about 10 %, so that a regression fails.
