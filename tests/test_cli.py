@@ -254,7 +254,7 @@ def test_a_repeated_warning_is_printed_once(capsys):
 
     parser = cli.build_parser
     try:
-        cli.build_parser = lambda: _FakeParser(func)
+        cli.build_parser = lambda *a, **k: _FakeParser(func)
         assert cli.main([]) == 0
     finally:
         cli.build_parser = parser
@@ -275,3 +275,38 @@ def test_run_unknown_name_lists_the_builtin_cases(capsys):
     code, _, err = run_cli(capsys, "run", "limestone")
     assert code == 2
     assert "limestone_calcination" in err and len(err.strip().splitlines()) == 1
+
+
+def test_the_command_table_matches_each_command_module():
+    import argparse
+
+    from rotarykiln.cli import COMMANDS, build_parser
+
+    (sub,) = (a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    helps = {c.dest: c.help for c in sub._choices_actions}
+    assert helps == COMMANDS
+
+
+@pytest.mark.parametrize(
+    "argv, light",
+    [(["--version"], True), (["--help"], True), (["-v", "regime", "--help"], False)],
+)
+def test_version_and_help_import_no_command_module(argv, light):
+    """``--version`` and ``--help`` build no subcommand parser: no model, numpy or pint import."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from rotarykiln.cli import main\n"
+        f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"
+        "heavy = [m for m in ('numpy', 'pint', 'rotarykiln.commands.run', 'rotarykiln.commands.regime')"
+        " if m in sys.modules]\n"
+        "print('HEAVY', heavy)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    heavy = out.stdout.rsplit("HEAVY", 1)[1]
+    assert (heavy.strip() == "[]") is light, heavy
+    if argv == ["--help"]:
+        for name in ("run", "sweep", "transient"):
+            assert name in out.stdout

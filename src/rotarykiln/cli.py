@@ -1,8 +1,10 @@
 """The ``rotarykiln`` command.
 
 Subcommands live in :mod:`rotarykiln.commands`, one module each; a module defines
-``register(subparsers)`` (adding its parser and ``set_defaults(func=run)``) and ``run(args) -> int``.
-The CLI discovers them, so a new physics package adds its command without touching this file.
+``register(subparsers)`` (adding its parser and ``set_defaults(func=run)``) and ``run(args) -> int``,
+and :data:`COMMANDS` names it with its one-line help. Only the module of the command being run is
+imported (``rotarykiln --version`` and ``rotarykiln --help`` import none), so the command line
+starts in a fraction of a second whatever the models import.
 
 User mistakes (:class:`~rotarykiln.errors.InputError`) print one line and exit with code 2, without a
 traceback; a failed solve (:class:`~rotarykiln.errors.ConvergenceError`) prints its diagnostics and
@@ -18,11 +20,31 @@ install_early()  # the program: SIGINT/SIGTERM print one line from here on, not 
 import argparse  # noqa: E402
 import importlib  # noqa: E402
 import os  # noqa: E402
-import pkgutil  # noqa: E402
 import sys  # noqa: E402
 import warnings  # noqa: E402
 
-__all__ = ["build_parser", "main"]
+__all__ = ["COMMANDS", "build_parser", "main"]
+
+COMMANDS: dict[str, str] = {
+    "app": "serve the interactive page (pick a case, edit inputs, run, download)",
+    "bed": "axial bed-depth profile, hold-up and residence time (Kramers or Scott)",
+    "calibrate": "fit case fields to measured temperatures or outlet values (weighted least squares)",
+    "demo": "run the built-in demonstration case",
+    "geometry": "cross-section geometry from fill, depth, half-angle or chord",
+    "regime": "Froude number, critical speed and bed regime",
+    "rtd": "residence time distribution: fit tracer data, predict a kiln",
+    "run": "validate a case file and run it",
+    "schema": "print the JSON Schema of a case file",
+    "sensitivity": "Sobol or Morris sensitivity indices of a model output over case-field "
+    "distributions",
+    "sweep": "run a model over ranges of case fields in parallel; one table and plots",
+    "transient": "run a kiln in time: start-up, upsets, control steps",
+    "transverse": "transverse mixing, segregation and solid-to-solid heating (retort zone)",
+}
+"""Subcommand -> its one-line help; the module ``rotarykiln.commands.<name>`` registers it (its
+parser's help is the same line: tests/test_cli.py checks it)."""
+
+_GLOBAL_OPTIONS = {"-v", "--verbose", "-vv", "-vvv", "--version", "-h", "--help"}
 
 
 class _Parser(argparse.ArgumentParser):
@@ -32,8 +54,19 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    from rotarykiln import __version__, commands
+def command_of(argv: list[str] | None) -> str | None:
+    """The subcommand named in ``argv`` (the first word after the global options), else None."""
+    for word in sys.argv[1:] if argv is None else argv:
+        if word in _GLOBAL_OPTIONS or (word.startswith("-v") and set(word[1:]) == {"v"}):
+            continue
+        return word if word in COMMANDS else None
+    return None
+
+
+def build_parser(command: str | None = "*") -> argparse.ArgumentParser:
+    """The ``rotarykiln`` parser with the subcommand ``command`` registered in full ("*": all of
+    them; None: none, each listed by its help line only, which imports no command module)."""
+    from rotarykiln import __version__
 
     parser = _Parser(
         prog="rotarykiln",
@@ -49,11 +82,11 @@ def build_parser() -> argparse.ArgumentParser:
         help="log what long runs do on stderr (-v: steps, -vv: details); before the command",
     )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
-    for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda m: m.name):
-        if info.name.startswith("_"):
-            continue
-        module = importlib.import_module(f"{commands.__name__}.{info.name}")
-        module.register(sub)
+    for name, help_line in COMMANDS.items():
+        if command in ("*", name):
+            importlib.import_module(f"rotarykiln.commands.{name}").register(sub)
+        else:
+            sub.add_parser(name, help=help_line)
     return parser
 
 
@@ -88,10 +121,9 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
+    parser = build_parser(command_of(argv))
+    args = parser.parse_args(argv)  # --version and --help exit here, before any numerical import
     from rotarykiln.errors import ConvergenceError, InputError
-
-    parser = build_parser()
-    args = parser.parse_args(argv)
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
