@@ -80,6 +80,9 @@ class ResultStore:
     """
 
     def __init__(self, folder):
+        from rotarykiln.extras import require
+
+        require("pyarrow", "a study's result store (Parquet)")
         self.folder = Path(folder)
         if self.folder.exists() and not self.folder.is_dir():
             raise InputError("study.store", str(self.folder), "a folder (it is a file)")
