@@ -1,4 +1,4 @@
-"""The hardening campaigns of docs/hardening.md (issue 15).
+"""The hardening campaigns of docs/dev/hardening.md (issue 15).
 
 ``fuzz``: mutated built-in case files (the seeded generator of tests/test_fuzz_cases.py) written
 to disk and run through ``rotarykiln run FILE --out DIR --no-plots`` in-process

@@ -3,8 +3,9 @@
 The docstrings follow the ht style with Sphinx roles and directives (``:func:`x```,
 ``:math:`x```, ``.. math::``) for the doctests and IDEs; mkdocstrings renders them as Markdown,
 where the roles would show raw (``:func:<code>x</code>``). This hook rewrites the rendered HTML
-of every page: math roles and directives become MathJax spans and blocks (the arithmatex
-``generic`` form the site already loads), cross-reference roles become plain code (``~a.b.c``
+of every page: math roles and directives become the spans and blocks of arithmatex's
+``generic`` form, which the site's vendored KaTeX typesets (docs/assets/javascripts/katex-init.js),
+cross-reference roles become plain code (``~a.b.c``
 shows ``c``, as Sphinx does).
 """
 
