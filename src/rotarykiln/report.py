@@ -15,7 +15,19 @@ from rotarykiln.regimes import (
     froude_number,
 )
 
-__all__ = ["case_summary", "format_table", "regime_summary"]
+__all__ = [
+    "air_ratio",
+    "case_summary",
+    "denoise",
+    "format_duration",
+    "format_mass_flow",
+    "format_power",
+    "format_quantity",
+    "format_table",
+    "format_temperature",
+    "regime_summary",
+    "significant",
+]
 
 RPM = 2 * np.pi / 60
 
@@ -106,3 +118,183 @@ def format_table(data: dict[str, Any]) -> str:
         text = f"{value:.5g}" if isinstance(value, float) else str(value)
         lines.append(f"{key:<{width}}  {text}")
     return "\n".join(lines)
+
+
+# --- numbers as an engineer reads them ---------------------------------------------------------
+
+ZERO_C = 273.15
+"""0 degC in K."""
+
+
+def significant(value: float, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant figures, in plain notation where it is readable.
+
+    Plain notation from 1e-3 to 1e6 (``70538.07`` -> ``"70540"``, ``0.072574`` -> ``"0.07257"``),
+    scientific outside it (``1.6374e-09`` -> ``"1.637e-09"``); no trailing zeros; ``"0"`` for 0.
+
+    Parameters
+    ----------
+    value : float
+        The number.
+    digits : int
+        Significant figures.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> significant(70538.07), significant(0.072574), significant(1.6374e-09), significant(-2.0)
+    ('70540', '0.07257', '1.637e-09', '-2')
+    """
+    value = float(value)
+    if value == 0 or not np.isfinite(value):
+        return "0" if value == 0 else str(value)
+    magnitude = int(np.floor(np.log10(abs(value))))
+    if not -3 <= magnitude < 6:
+        return f"{value:.{digits - 1}e}".replace(".000e", "e").rstrip()
+    decimals = digits - 1 - magnitude  # negative: rounds to tens, hundreds...
+    text = f"{round(value, decimals):.{max(decimals, 0)}f}"
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
+def denoise(value: float, scale: float, rtol: float) -> float:
+    """``value``, or 0 when it is below ``rtol`` times ``scale`` (round-off, not a result).
+
+    Parameters
+    ----------
+    value : float
+        The number (an energy term, a closure).
+    scale : float
+        What it is small against (the total energy input; 1 for a relative closure).
+    rtol : float
+        The tolerance the solver closes the balance to.
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> denoise(1.6374e-09, 70538.0, 1e-6), denoise(14139.0, 70538.0, 1e-6)
+    (0.0, 14139.0)
+    """
+    return 0.0 if abs(value) < rtol * abs(scale) else float(value)
+
+
+def format_power(watts: float, digits: int = 4) -> str:
+    """A heat flow in W, kW or MW (``119740`` -> ``"119.7 kW"``).
+
+    Examples
+    --------
+    >>> format_power(119740.3), format_power(2.5e6), format_power(35.0), format_power(0.0)
+    ('119.7 kW', '2.5 MW', '35 W', '0 W')
+    """
+    watts = float(watts)
+    for factor, unit in ((1e6, "MW"), (1e3, "kW")):
+        if abs(watts) >= factor:
+            return f"{significant(watts / factor, digits)} {unit}"
+    return f"{significant(watts, digits)} W"
+
+
+def format_temperature(kelvin: float) -> str:
+    """A temperature in K with degrees Celsius beside it, to 0.1 K.
+
+    Examples
+    --------
+    >>> format_temperature(1011.83)
+    '1011.8 K (738.7 °C)'
+    """
+    kelvin = float(kelvin)
+    return f"{kelvin:.1f} K ({kelvin - ZERO_C:.1f} °C)"
+
+
+def format_mass_flow(kg_s: float, digits: int = 4) -> str:
+    """A mass flow in kg/h, or t/h from 1 t/h (``0.017222`` -> ``"62 kg/h"``).
+
+    Examples
+    --------
+    >>> format_mass_flow(0.0172222), format_mass_flow(12.5), format_mass_flow(0.079155)
+    ('62 kg/h', '45 t/h', '285 kg/h')
+    """
+    per_hour = float(kg_s) * 3600.0
+    if abs(per_hour) >= 1000.0:
+        return f"{significant(per_hour / 1000.0, digits)} t/h"
+    return f"{significant(per_hour, digits)} kg/h"
+
+
+def format_duration(seconds: float, digits: int = 4) -> str:
+    """A duration in s, min or h, whichever reads best (``7423`` -> ``"123.7 min"``).
+
+    Examples
+    --------
+    >>> format_duration(7423.0), format_duration(45.0), format_duration(36000.0)
+    ('123.7 min', '45 s', '10 h')
+    """
+    seconds = float(seconds)
+    if abs(seconds) >= 5 * 3600:
+        return f"{significant(seconds / 3600.0, digits)} h"
+    if abs(seconds) >= 120:
+        return f"{significant(seconds / 60.0, digits)} min"
+    return f"{significant(seconds, digits)} s"
+
+
+def air_ratio(excess_air: float) -> str:
+    """The air ratio lambda (air over stoichiometric air) beside the excess air in %.
+
+    Parameters
+    ----------
+    excess_air : float
+        Air over stoichiometric air, less 1 (``-0.072574``: 7.3 % short of stoichiometric).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> air_ratio(-0.072574), air_ratio(0.39653)
+    ('λ = 0.93 (-7.3 % excess air)', 'λ = 1.40 (+39.7 % excess air)')
+    """
+    lam = 1.0 + float(excess_air)
+    return f"λ = {lam:.2f} ({100.0 * excess_air:+.1f} % excess air)"
+
+
+def format_quantity(value: Any, unit: str, digits: int = 4) -> str:
+    """A summary value with its unit, in the unit people read (kW, K with degC, kg/h, min).
+
+    Parameters
+    ----------
+    value : float, int, str or bool
+        The value, SI as in the summary.
+    unit : str
+        Its unit as :func:`rotarykiln.tables.split_unit` gives it (``"W"``, ``"K"``,
+        ``"kg/s"``, ``"s"``, ``""`` for a dimensionless number...).
+    digits : int
+        Significant figures.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> format_quantity(1.1974e5, "W"), format_quantity(0.0172222, "kg/s")
+    ('119.7 kW', '62 kg/h')
+    >>> format_quantity(100, ""), format_quantity("rolling", ""), format_quantity(0.12, "")
+    ('100', 'rolling', '0.12')
+    """
+    if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
+        return str(value)
+    if isinstance(value, int | np.integer):
+        return f"{value} {unit}".rstrip()
+    special = {
+        "W": format_power,
+        "K": lambda v, d: format_temperature(v),
+        "kg/s": format_mass_flow,
+        "s": format_duration,
+    }.get(unit)
+    if special is not None:
+        return special(value, digits)
+    return f"{significant(value, digits)} {unit}".rstrip()

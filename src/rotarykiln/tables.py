@@ -1,7 +1,7 @@
 """Tables that carry their units: the naming convention of columns and summary keys, and the
 ``DataFrame.attrs`` every ``to_frame()`` of a result sets.
 
-The convention (docs/architecture.md, "Names and units of outputs"): a column is
+The convention (docs/dev/architecture.md, "Names and units of outputs"): a column is
 ``<quantity>_<unit>`` and a summary key ``<model>_<quantity>_<unit>``, the unit last, written
 with underscores for the spaces and slashes of the unit (``kg_s`` is kg/s, ``W_m2_K`` is
 W/(m2 K), ``kg_s_m`` is kg/(s m), ``1_s`` is 1/s). A dimensionless number has no suffix
