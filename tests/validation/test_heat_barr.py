@@ -120,3 +120,65 @@ def test_mixing_limited_burnout_option_converges_and_closes(counter_current):
     assert abs(sol.energy_closure) < 1e-6 and abs(s["closure_relative"]) < 1e-6
     assert s["combustion_heat_W"] == pytest.approx(s["fuel_lhv_input_W"], rel=2e-3)
     assert 0.3 < sol.burner["flame_length_m"] < 1.0  # Hawthorne-Weddell-Hottel, 40 mm nozzle
+
+
+ALL_TRIALS = ("T2", "T3", "T4", "T6", "T9")
+
+
+def test_new_cases_hold_the_second_data_file_measurements():
+    # T2 and T9 (issue 23) come from barr_pilot_kiln_T2_T9.yaml
+    path = resources.files("rotarykiln") / "data" / "barr1986" / "barr_pilot_kiln_T2_T9.yaml"
+    data = yaml.safe_load(path.read_text())
+    for t in ("T2", "T9"):
+        m = load_case(builtin_case_path(f"barr_{t}")).measurements
+        src = data["cases"][t]["measured_K"]
+        assert m.t_bed == pytest.approx([v for _, v in src["T_bed"]])
+        assert m.t_gas == pytest.approx([v for _, v in src["T_gas_off_bed"]])
+        assert m.t_gas_wall == pytest.approx([v for _, v in src["T_gas_off_wall"]])
+        assert m.t_wall == pytest.approx([v for _, v in src["T_wall"]])
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the campaign targets are not met yet (docs/validation.md, Barr: five trials); "
+    "when they are, this test passes and strict xfail fails it: remove the mark",
+)
+def test_five_trials_meet_the_campaign_targets():
+    # targets: mean RMSE bed <= 25 K, gas 2.5 cm above the bed <= 30 K, inner wall <= 25 K, and
+    # no trend with firing: the mean bed bias of T2 and of T9 each within 15 K of zero
+    scores = {"bed": [], "gas": [], "wall": []}
+    bias = {}
+    for t in ALL_TRIALS:
+        case = load_case(builtin_case_path(f"barr_{t}"))
+        sol = run_kiln_case(case)
+        r = sol.measured_rmse()
+        for k in scores:
+            scores[k].append(r[k])
+        m = case.measurements
+        bias[t] = float(np.mean(np.interp(m.z_bed, sol.z, sol.t_bed) - np.asarray(m.t_bed)))
+    mean = {k: float(np.mean(v)) for k, v in scores.items()}
+    assert mean["bed"] <= 25.0 and mean["gas"] <= 30.0 and mean["wall"] <= 25.0, mean
+    assert abs(bias["T2"]) <= 15.0 and abs(bias["T9"]) <= 15.0, bias
+
+
+def test_banded_exchange_closes_and_passes_less_heat_at_the_highest_firing():
+    # the WSGG grey gases in the network (closures.radiation_model: banded): the gas absorbs
+    # the cooler surfaces' radiation with its absorptivity at their temperature, so at T9's
+    # hot, low-excess-air flame it hands less heat to the bed and wall than one grey gas
+    import dataclasses
+
+    from rotarykiln.kiln.build import kiln_from_case
+    from rotarykiln.kiln.solve import solve_kiln
+
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T9")))
+    grey = solve_kiln(kiln, cells)
+    banded_kiln = dataclasses.replace(
+        kiln, closures=dataclasses.replace(kiln.closures, radiation_model="banded")
+    )
+    banded = solve_kiln(banded_kiln, cells)
+    assert abs(banded.energy_closure) < 1e-6
+    assert abs(banded.energy_sheet["closure_relative"]) < 1e-6
+    mid = (banded.z > 1.83) & (banded.z < 3.67)
+    assert np.all(banded.t_bed[mid] < grey.t_bed[mid])
+    assert np.all(banded.t_wall[mid] < grey.t_wall[mid])
+    assert banded.gas_outlet_temperature > grey.gas_outlet_temperature

@@ -8,12 +8,19 @@ r"""Emissivity of CO2/H2O gas mixtures (weighted sum of grey gases) and the free
 - :func:`gorog_mean_beam_length`: :math:`L_e = 0.95 D (1 - h/D)`.
 - :func:`soot_emissivity`: grey soot of a luminous flame, and :func:`combined_emissivity`
   of gas and soot.
+- :func:`wsgg_bands`: the grey gases of either WSGG model one by one (their weights at the
+  gas temperature and at any surface temperature, and their emissivities), for an exchange
+  that keeps the spectrum: the absorptivity of the gas for a surface at :math:`T_s` is
+  :math:`\alpha_g = \sum_i a_i(T_s)[1 - e^{-\kappa_i pL}]` (Modest, Radiative Heat Transfer,
+  3rd ed., section 11.10; closures.md 3b), not the emissivity at the gas temperature.
 
 Partial pressures in Pa (converted to atm inside: the models are fitted in atm m).
 Coefficients: team source folder reference/closures.md 3a, 3c, 3d.
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -32,6 +39,8 @@ __all__ = [
     "johansson_wsgg_emissivity",
     "smith_wsgg_emissivity",
     "soot_emissivity",
+    "WsggBands",
+    "wsgg_bands",
 ]
 
 ATM = 101325.0
@@ -120,6 +129,26 @@ def smith_wsgg_emissivity(temperature, pressure_path_length, case="pw/pc=2", *, 
         a = b1 * 1e-1 + b2 * 1e-4 * T + b3 * 1e-7 * T**2 + b4 * 1e-11 * T**3
         eps = eps + a * (1.0 - np.exp(-kappa * pl))
     return eps
+
+
+def _johansson_weights(temperature, mr):
+    """Weights a_i (4, ...) of Johansson et al. (2011) at ``temperature`` (K), MR in [0.125, 2]."""
+    tr = np.asarray(temperature, dtype=float) / 1200.0
+    out = []
+    for cij in _JOHANSSON_C:
+        a = 0.0
+        for j in range(3):
+            a = a + (cij[0][j] + cij[1][j] * mr + cij[2][j] * mr**2) * tr**j
+        out.append(a)
+    return np.stack(np.broadcast_arrays(*out))
+
+
+def _johansson_ratio(p_h2o, p_co2):
+    """Molar ratio MR = p_w/p_c (2 without CO2), not clipped."""
+    pw = np.asarray(p_h2o, dtype=float)
+    pc = np.asarray(p_co2, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(pc > 0, pw / np.where(pc > 0, pc, 1.0), 2.0)
 
 
 def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=True):
@@ -285,3 +314,87 @@ def combined_emissivity(eps_gas, eps_soot):
     notes reference/flames.md section 4.
     """
     return eps_gas + eps_soot - eps_gas * eps_soot
+
+
+WSGG_MODELS = ("johansson2011", "smith1982")
+
+
+@dataclass(frozen=True)
+class WsggBands:
+    r"""The grey gases of a WSGG model at one gas state (partial pressures, path length).
+
+    ``model`` (``johansson2011`` or ``smith1982``); ``emissivity``: the emissivity of each
+    grey gas, :math:`1 - e^{-\kappa_i pL}` (shape ``(n_gases, ...)``); ``ratio``: the molar
+    ratio :math:`p_w/p_c` the Johansson weights are evaluated at (clipped to 0.125-2; None
+    for Smith's ``pw/pc=2`` set). :meth:`weights` gives the weights :math:`a_i(T)` at any
+    temperature: at the gas temperature they make the emissivity, at a surface temperature the
+    gas's absorptivity for that surface's radiation (:meth:`total`). The clear gas (the
+    windows) has the weight :math:`1 - \sum_i a_i`.
+    """
+
+    model: str
+    emissivity: np.ndarray
+    ratio: np.ndarray | None = None
+
+    def weights(self, temperature) -> np.ndarray:
+        """Weights a_i(T) (-), shape ``(n_gases,) + broadcast shape``: clipped to >= 0 with
+        a sum of at most 1 (the polynomials are fitted over 500-2500 K / 600-2400 K)."""
+        T = np.asarray(temperature, dtype=float)
+        if self.model == "johansson2011":
+            a = _johansson_weights(T, self.ratio)
+        else:
+            a = np.stack(
+                np.broadcast_arrays(
+                    *(
+                        b1 * 1e-1 + b2 * 1e-4 * T + b3 * 1e-7 * T**2 + b4 * 1e-11 * T**3
+                        for _, b1, b2, b3, b4 in _SMITH["pw/pc=2"]
+                    )
+                )
+            )
+        a = np.maximum(a, 0.0)
+        total = a.sum(axis=0)
+        return a / np.maximum(total, 1.0)
+
+    def total(self, temperature) -> np.ndarray:
+        r""":math:`\sum_i a_i(T)\,\varepsilon_i` (-): the emissivity at the gas temperature,
+        the absorptivity for a black surface at ``temperature``."""
+        return (self.weights(temperature) * self.emissivity).sum(axis=0)
+
+
+def wsgg_bands(model, p_h2o, p_co2, path_length) -> WsggBands:
+    r"""The grey gases of a WSGG model for CO2/H2O at partial pressures ``p_h2o``, ``p_co2``
+    (Pa) over the beam length ``path_length`` (m).
+
+    ``model``: ``johansson2011`` (4 grey gases, any :math:`p_w/p_c` in 0.125-2) or
+    ``smith1982`` (3 grey gases, :math:`p_w/p_c = 2`, the natural-gas products). The weights
+    at the gas temperature reproduce :func:`johansson_wsgg_emissivity` and
+    :func:`smith_wsgg_emissivity` (``pw/pc=2``) exactly; at a surface temperature they give
+    the absorptivity :math:`\alpha_g(T_s) = \sum_i a_i(T_s)[1 - e^{-\kappa_i pL}]`.
+
+    Examples
+    --------
+    >>> p = 0.1 * 101325
+    >>> b = wsgg_bands("johansson2011", p, p, 1.0)
+    >>> round(float(b.total(1200.0)), 3)  # the emissivity, as johansson_wsgg_emissivity
+    0.236
+    >>> round(float(b.total(800.0)), 3)  # absorptivity for a surface at 800 K: higher
+    0.307
+
+    References
+    ----------
+    M.F. Modest, Radiative Heat Transfer, 3rd ed. (2013), section 11.10 (WSGG with surface
+    weights at the emitter's temperature); Johansson et al. (2011); Smith et al. (1982);
+    closures.md 3b-3d.
+    """
+    if model not in WSGG_MODELS:
+        raise InputError("closures.gas_emissivity", model, "one of " + ", ".join(WSGG_MODELS))
+    pw = np.asarray(p_h2o, dtype=float) / ATM
+    pc = np.asarray(p_co2, dtype=float) / ATM
+    pl = (pw + pc) * np.asarray(path_length, dtype=float)
+    if model == "johansson2011":
+        mr = np.clip(_johansson_ratio(pw, pc), 0.125, 2.0)
+        kappa = [k1 + k2 * mr for k1, k2 in _JOHANSSON_K]
+        eps = np.stack(np.broadcast_arrays(*(-np.expm1(-k * pl) for k in kappa)))
+        return WsggBands(model, eps, mr)
+    eps = np.stack(np.broadcast_arrays(*(-np.expm1(-row[0] * pl) for row in _SMITH["pw/pc=2"])))
+    return WsggBands(model, eps, None)

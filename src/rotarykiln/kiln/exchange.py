@@ -49,8 +49,13 @@ from rotarykiln.heat.gas_radiation import (
     johansson_wsgg_emissivity,
     smith_wsgg_emissivity,
     soot_emissivity,
+    wsgg_bands,
 )
-from rotarykiln.heat.radiation import freeboard_radiation
+from rotarykiln.heat.radiation import (
+    freeboard_radiation,
+    freeboard_radiation_bands,
+    freeboard_radiation_paths,
+)
 from rotarykiln.kiln.model import Closures
 from rotarykiln.materials.gas import GasPropertyTable
 
@@ -60,6 +65,8 @@ __all__ = [
     "BulkBed",
     "CrossSectionExchange",
     "cell_report",
+    "gas_conductance",
+    "upwind_weight",
     "FLOW_KEYS",
     "EPS_GAS_MAX",
 ]
@@ -288,6 +295,71 @@ class CrossSectionExchange:
             return johansson_wsgg_emissivity(t_gas, p_w, p_c, L, check=check)
         return smith_wsgg_emissivity(t_gas, (p_w + p_c) * L, "pw/pc=2", check=check)
 
+    def bands(self, gas: FreeboardGas):
+        """The grey gases of the WSGG model (:func:`~rotarykiln.heat.gas_radiation.wsgg_bands`)
+        for the ``banded`` radiation model, or None (one grey gas: the ``grey`` model, a
+        constant or line emissivity, or a gas without CO2 and H2O)."""
+        c = self.closures
+        if (
+            c.radiation_model != "banded"
+            or self.emissivity_law is not None
+            or not isinstance(c.gas_emissivity, str)
+        ):
+            return None
+        p_w, p_c = gas.partial_pressures()
+        p_sum = p_w + p_c
+        if not np.any(np.asarray(p_sum) > 0):
+            return None
+        return wsgg_bands(c.gas_emissivity, p_w, p_c, self.geometry.beam_length)
+
+    def soot(self, t_gas):
+        """Grey soot emissivity (-) of a luminous zone per cell, or None."""
+        if self.soot_fv is None:
+            return None
+        return soot_emissivity(self.soot_fv, np.maximum(t_gas, 1.0), self.geometry.beam_length)
+
+    def radiation(self, gas: FreeboardGas, t_gas, t_bed, t_wall, eps_gas=None, paths=False):
+        """Net radiation absorbed by the exposed wall and the bed (W/m), by the
+        ``radiation_model``: one grey gas of emissivity ``eps_gas`` (computed when not given)
+        or the WSGG grey gases. With ``paths``: the three path flows gas -> wall, gas -> bed,
+        wall -> bed (direct) instead (W/m, :func:`freeboard_radiation_paths`)."""
+        g = self.geometry
+        bands = self.bands(gas)
+        if bands is None:
+            if eps_gas is None:
+                eps_gas = self.gas_emissivity(gas, t_gas)
+            args = (t_gas, t_wall, t_bed, eps_gas, self.eps_wall, self.bed.emissivity)
+            if paths:
+                return freeboard_radiation_paths(*args, g.exposed_wall, g.chord)
+            return freeboard_radiation(*args, g.exposed_wall, g.chord, check=False)
+        soot = self.soot(t_gas)
+        if paths:
+            if soot is not None:
+                raise NotImplementedError("paths of a banded exchange with soot")
+            return freeboard_radiation_paths(
+                t_gas,
+                t_wall,
+                t_bed,
+                None,
+                self.eps_wall,
+                self.bed.emissivity,
+                g.exposed_wall,
+                g.chord,
+                bands=bands,
+            )
+        return freeboard_radiation_bands(
+            t_gas,
+            t_wall,
+            t_bed,
+            bands,
+            self.eps_wall,
+            self.bed.emissivity,
+            g.exposed_wall,
+            g.chord,
+            soot=soot,
+            check=False,
+        )
+
     def coefficients(self, gas: FreeboardGas, t_gas, t_bed, t_wall, check=False) -> dict:
         """Heat transfer coefficients (W/(m2 K)), gas emissivity and Reynolds number.
 
@@ -344,38 +416,67 @@ class CrossSectionExchange:
             "Re": re,
         }
 
-    def flows(self, gas: FreeboardGas, t_gas, t_bed, t_wall, radiation_scale=1.0):
+    def flows(self, gas: FreeboardGas, t_gas, t_bed, t_wall, radiation_scale=1.0, co=None):
         """Heat flows per metre (W/m, keys :data:`FLOW_KEYS`) and the coefficients.
 
         ``q_gas_wall_conv`` gas -> exposed wall, ``q_gas_bed_conv`` gas -> bed surface,
         ``q_covered_wall_bed`` covered wall -> bed, ``q_rad_to_wall`` and ``q_rad_to_bed``
         net radiation absorbed by the exposed wall and the bed (their sum is the gas's loss),
-        scaled by ``radiation_scale`` (continuation).
+        scaled by ``radiation_scale`` (continuation). ``co``: the coefficients when already
+        computed (:meth:`coefficients`), else computed at these temperatures.
         """
         g = self.geometry
         tg, tb, tw = t_gas, t_bed, t_wall
-        co = self.coefficients(gas, tg, tb, tw)
+        if co is None:
+            co = self.coefficients(gas, tg, tb, tw)
         q_gw = co["h_gw"] * g.exposed_wall * (tg - tw)
         q_gb = co["h_gb"] * g.chord * (tg - tb)
         q_cw = co["h_cw"] * g.covered_wall * (tw - tb)
         if self.closures.radiation:
-            q_rw, q_rb = freeboard_radiation(
-                tg,
-                tw,
-                tb,
-                co["eps_gas"],
-                self.eps_wall,
-                self.bed.emissivity,
-                g.exposed_wall,
-                g.chord,
-                check=False,
-            )
+            q_rw, q_rb = self.radiation(gas, tg, tb, tw, co["eps_gas"])
             q_rw = radiation_scale * q_rw
             q_rb = radiation_scale * q_rb
         else:
             q_rw = q_rb = 0.0 * tg
         flows = dict(zip(FLOW_KEYS, (q_gw, q_gb, q_cw, q_rw, q_rb), strict=True))
         return flows, co
+
+
+def gas_conductance(co: dict, geometry, t_max, radiation_scale=1.0):
+    r"""Upper bound of the gas's heat conductance to its surroundings, W/(m K) per metre.
+
+    Convection to the exposed wall and the bed surface plus radiation bounded by
+    :math:`4\sigma\varepsilon_g T_{max}^3 (A_w + L_c)` (the secant of
+    :math:`\sigma(T_g^4 - T_s^4)` never exceeds it): the number of transfer units of a cell
+    (:func:`upwind_weight`) is this times the cell length over the gas's heat capacity flow.
+    """
+    g = geometry
+    k = co["h_gw"] * g.exposed_wall + co["h_gb"] * g.chord
+    eps = np.asarray(co["eps_gas"], dtype=float)
+    sigma = 5.670374419e-8
+    return k + radiation_scale * 4.0 * sigma * eps * t_max**3 * (g.exposed_wall + g.chord)
+
+
+def upwind_weight(ntu):
+    r"""Weight :math:`\theta` of a cell's outlet face in its mean temperature.
+
+    The exact mean of a stream exchanging with surroundings at a fixed temperature over
+    ``ntu`` transfer units, :math:`\bar T = (1-\theta) T_{in} + \theta T_{out}` with
+    :math:`\theta = 1/(1 - e^{-N}) - 1/N`: 1/2 (the face average, second order) for a cell of
+    few transfer units, tending to 1 (the outlet) for many. With it a face is never driven
+    beyond the temperature it exchanges with, for any cell size: the plain average of the
+    faces overshoots it (and oscillates cell to cell) once a cell holds more than 2 transfer
+    units (a large drum swept by a little gas).
+
+    Examples
+    --------
+    >>> [round(float(upwind_weight(n)), 4) for n in (0.0, 0.1, 2.0, 50.0)]
+    [0.5, 0.5083, 0.6565, 0.98]
+    """
+    n = np.maximum(np.asarray(ntu, dtype=float), 0.0)
+    small = n < 1e-4
+    safe = np.where(small, 1.0, n)
+    return np.where(small, 0.5 + n / 12.0, -1.0 / np.expm1(-safe) - 1.0 / safe)
 
 
 def cell_report(t_bed, t_gas, flows: dict, q_loss, coefficients: dict, **sources) -> dict:

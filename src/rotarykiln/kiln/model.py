@@ -20,6 +20,7 @@ __all__ = [
     "GAS_BED",
     "COVERED_WALL",
     "GAS_EMISSIVITY",
+    "RADIATION_MODELS",
 ]
 
 GAS_WALL = ("tscheng1979", "gorog1982")
@@ -27,6 +28,7 @@ GAS_BED = ("tscheng1979", "gorog1982")
 COVERED_WALL = ("li2005", "tscheng1979", "wachters_kramers1964")
 GAS_EMISSIVITY = ("johansson2011", "smith1982")
 BED_CONDUCTIVITY = ("given", "maxwell", "zehner_schlunder")
+RADIATION_MODELS = ("grey", "banded")
 
 
 @dataclass(frozen=True)
@@ -39,7 +41,12 @@ class Closures:
     ``bed_conductivity`` in {given, maxwell, zehner_schlunder} (``given`` uses the measured
     bulk value of the solid, falling back to zehner_schlunder); ``convection_factor`` (-, > 0,
     default 1: the correlations as published) multiplies the gas-wall and gas-bed convection
-    coefficients, a handle for calibration to plant data, not a default to change.
+    coefficients, a handle for calibration to plant data, not a default to change;
+    ``radiation_model`` in {grey, banded}: the freeboard exchange with one grey gas
+    (absorptivity equal to the emissivity at the gas temperature) or with every grey gas of the
+    WSGG ``gas_emissivity`` model in the network, the surfaces' radiation weighted at their own
+    temperature (:func:`rotarykiln.heat.radiation.freeboard_radiation_bands`; a constant or a
+    line emissivity stays grey).
     """
 
     gas_wall: str = "tscheng1979"
@@ -49,6 +56,7 @@ class Closures:
     gas_emissivity: str | float = "johansson2011"
     bed_conductivity: str = "given"
     convection_factor: float = 1.0
+    radiation_model: str = "grey"
 
     def __post_init__(self):
         for name, value, allowed in (
@@ -56,6 +64,7 @@ class Closures:
             ("closures.gas_bed", self.gas_bed, GAS_BED),
             ("closures.covered_wall", self.covered_wall, COVERED_WALL),
             ("closures.bed_conductivity", self.bed_conductivity, BED_CONDUCTIVITY),
+            ("closures.radiation_model", self.radiation_model, RADIATION_MODELS),
         ):
             if value not in allowed:
                 raise InputError(name, value, "one of " + ", ".join(allowed))
@@ -86,7 +95,7 @@ class Closures:
         'gorog1982'
         """
         base = SEED004_CLOSURES if getattr(section, "preset", "default") == "seed004" else cls()
-        given = {f.name: getattr(section, f.name) for f in fields(cls)}
+        given = {f.name: getattr(section, f.name, None) for f in fields(cls)}
         return dataclasses.replace(base, **{k: v for k, v in given.items() if v is not None})
 
 
