@@ -114,8 +114,14 @@ def _cases(tmp_path_factory=None):
         "--length 1 kg",
         "--length abc",
         "--kind foo",
+        "--baseline inf",
+        "--baseline -inf",
     ):
         cases.append((f"rtd fit {extra}", ["rtd", "fit", TRACER, *extra.split()]))
+    # a value with a newline is escaped: still one line (issue 21)
+    cases.append(("rtd fit --baseline newline", ["rtd", "fit", TRACER, "--baseline", "1\n2"]))
+    cases.append(("rtd fit --time-unit newline", ["rtd", "fit", TRACER, "--time-unit", "mi\nn"]))
+    cases.append(("rtd fit file name newline", ["rtd", "fit", "no/such\nfile.csv"]))
     cases.append(("rtd fit missing file", ["rtd", "fit", "no/such/file.csv"]))
     cases.append(("rtd predict missing case", ["rtd", "predict", "no_such_case"]))
     cases.append(("rtd predict no rtd section", ["rtd", "predict", "tscheng_A16"]))
@@ -157,6 +163,12 @@ def _cases(tmp_path_factory=None):
         ["--grid", "operation.speed=1 rpm,2 rpm", "--workers", "abc"],
         ["--grid", "operation.speed=1 rpm,2 rpm", "--seed", "-1"],
         ["--grid", "operation.speed=1 rpm,2 rpm", "--name", "../x"],
+        # issue 21: one cap for every design, before it is built; a path given twice
+        ["--grid", "operation.speed=" + ",".join(f"{1 + i / 1000:g} rpm" for i in range(1000))]
+        + ["--grid", "gas.flow=" + ",".join(f"{20 + i / 100:g} kg/h" for i in range(1000))],
+        ["--grid", "operation.speed=1 rpm", "--grid", "operation.speed=2 rpm"],
+        ["--oat", "operation.speed=1 rpm", "--oat", "operation.speed=2 rpm"],
+        ["--grid", "operation.speed=1 rpm\n2 rpm,x"],
     ):
         cases.append((f"sweep {' '.join(extra)[:40]}", sweep + extra))
     cases.append(("sweep missing case", ["sweep", "--case", "nope.yaml", "--model", "kiln"]))
@@ -184,6 +196,11 @@ def _cases(tmp_path_factory=None):
         ["--param", "operation.speed=normal(1 rpm, -1 rpm)", *out],
         ["--param", "no.such=uniform(1, 2)", *out],
         ["--param", "operation.speed=uniform(1 rpm)", *out],
+        # issue 21: below each method's minimum (was an IndexError traceback), over the cap
+        param + ["--method", "uncertainty", "--n", "1"],
+        param + out + ["--n", "1"],
+        param + out + ["--method", "morris", "--n", "1"],
+        param + out + ["--n", "50000"],
     ):
         cases.append((f"sensitivity {' '.join(extra)[:40]}", sens + extra))
     cases.append(("sensitivity missing case", ["sensitivity", "nope.yaml", "--model", "kiln"]))

@@ -139,6 +139,12 @@ def _main(argv: list[str] | None) -> int:
     except ConvergenceError as exc:
         print(f"rotarykiln {args.command}: solver failed: {exc}", file=sys.stderr)
         return 1
+    except MemoryError:  # a run larger than this machine: one line, not a traceback
+        print(
+            f"rotarykiln {args.command}: out of memory (try fewer cells, cases or rows)",
+            file=sys.stderr,
+        )
+        return 1
     except BrokenPipeError:  # output piped into a reader that closed early (e.g. `| head`)
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 141

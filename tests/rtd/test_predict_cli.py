@@ -1,5 +1,6 @@
 import json
 import math
+import warnings
 
 import numpy as np
 import pandas as pd
@@ -146,3 +147,49 @@ def test_builtin_rtd_case():
     pred = predict_from_case(load_case(builtin_case_path("rtd/bongo_njeng_sand_rl")))
     assert pred.mean_residence_time == pytest.approx(43.34 * 60)
     assert pred.dispersion == pytest.approx(1.967e-6, rel=2e-3)  # notes sec. 2.6, sand RL
+
+
+# --------------------------------------------------------------------- issue 21: hardening
+
+
+@pytest.mark.parametrize(
+    ("change", "match"),
+    [
+        ({"rtd": {"peclet": 1e300}}, r"rtd.peclet: 1e\+300 is not in \[1e-06, 1e\+10\]"),
+        ({"rtd": {"peclet": 1e-300}}, r"rtd.peclet: 1e-300 is not in \[1e-06, 1e\+10\]"),
+        (
+            {"operation": {"feed": "1e-308 kg/h"}},
+            r"rtd.peclet: about 1e-26\d.\d from the bongo_njeng2015 correlation .* is not in",
+        ),
+    ],
+)
+@pytest.mark.parametrize("model", ["open-open", "closed-closed", "open-closed", "gaussian"])
+def test_extreme_rtd_sections_are_refused_in_one_line(change, match, model):
+    # were OverflowError / ZeroDivisionError in rtd/dispersion.py
+    data = json.loads(json.dumps(CASE))
+    for section, values in change.items():
+        data[section].update(values)
+    data["rtd"]["model"] = model
+    with warnings.catch_warnings(), pytest.raises(InputError, match=match) as e:
+        warnings.simplefilter("ignore")  # the correlation's validated range
+        predict_from_case(parse_case(data))
+    assert "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize("model", ["closed-closed", "open-closed"])
+def test_a_tiny_repose_angle_gives_a_sharp_but_finite_prediction_quickly(model):
+    # a 3.9e-11 deg static repose angle: Pe ~ 1.3e8 from the correlation; was 1.5 GB allocated
+    # by the Laplace inversion before it failed
+    import time
+
+    data = json.loads(json.dumps(CASE))
+    data["material"]["static_repose_angle"] = "3.9e-11 deg"
+    data["rtd"]["model"] = model
+    t0 = time.perf_counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        p = predict_from_case(parse_case(data))
+    assert time.perf_counter() - t0 < 2.0
+    assert 1e7 < p.peclet < 1e10
+    assert np.all(np.isfinite(p.exit_age)) and p.exit_age.max() > 0
+    assert p.mean_residence_time == pytest.approx(43.3 * 60, rel=1e-9)

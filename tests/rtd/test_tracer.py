@@ -132,3 +132,40 @@ def test_read_csv_errors(tmp_path, text, match):
         read_tracer_csv(p)
     with pytest.raises(InputError, match="no such file"):
         read_tracer_csv(tmp_path / "missing.csv")
+
+
+# --------------------------------------------------------------------- issue 21: hardening
+
+
+@pytest.mark.parametrize(
+    ("text", "match"),
+    [
+        ("time [min],C\n0,0\n1,1e400\n2,0\n", r"line 3: signal inf is not a finite number"),
+        ("time [min],C\n0,0\n1,1e300\n2,0\n", r"line 3: signal 1e\+300 is not a finite number"),
+        ("time [min],C\n0,0\n1e300,1\n2,0\n", r"line 3: time 6e\+301 s is not a finite number"),
+        ("time [min],C\n0,0\n1,nan\n", r"line 3: 1, nan is not two numbers"),
+        ('time [min],C\n0,0\n1,"1\n2"\n', r"line 3: 1, '1\\n2' is not two numbers"),
+        ('"time\n",C\n0,0\n1,1\n', r"the time column 'time\\n' has no unit"),
+    ],
+)
+def test_tracer_values_are_finite_numbers_and_refusals_one_line(tmp_path, text, match):
+    p = tmp_path / "c.csv"
+    p.write_text(text)
+    with pytest.raises(InputError, match=match) as e:
+        read_tracer_csv(p)
+    assert "\n" not in str(e.value)
+
+
+def test_tracer_files_have_the_data_file_limits(tmp_path):
+    # a 10-million-row file was read whole and its 746 MB table written
+    p = tmp_path / "rows.csv"
+    p.write_text("time [s],C\n" + "".join(f"{i},1\n" for i in range(100_001)))
+    with pytest.raises(InputError, match="more than 100,000 rows"):
+        read_tracer_csv(p)
+    with p.open("wb") as fh:
+        fh.truncate(25_000_000)
+    with pytest.raises(InputError, match="too large for a tracer file"):
+        read_tracer_csv(p)
+    p.write_bytes("time [min],C\n0,0\n1,\xe9\n".encode("latin-1"))
+    with pytest.raises(InputError, match=r"not UTF-8 text \(byte 0xe9 at line 3\)"):
+        read_tracer_csv(p)

@@ -10,7 +10,7 @@ import yaml
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.cli import main
-from rotarykiln.errors import InputError
+from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.studies.calibration import calibrate, parse_fit, read_measurements
 from rotarykiln.studies.examples import EXPONENTIAL_CASE, exponential_heating
 from rotarykiln.studies.models import kiln_profile_model
@@ -119,7 +119,7 @@ def test_bad_input_is_one_line():
             lambda: calibrate(exponential_heating, EXPONENTIAL_CASE, ["heat.exchang=1 1/m"], data),
             "did you mean heat.exchange",
         ),
-        (lambda: read_measurements(data.assign(uncertainty=0)), "uncertainty > 0"),
+        (lambda: read_measurements(data.assign(uncertainty=0)), r"uncertainty 0 is not in \[1e-12"),
         (lambda: read_measurements(data.drop(columns="z")), "missing z"),
         (lambda: parse_fit("heat.exchange=1 1/m [2, 3]"), "start value between"),
     ]
@@ -288,3 +288,90 @@ def test_calibrate_command_joint_fit_of_two_cases(tmp_path, capsys):
     assert p["ci95_low"] <= 0.6 <= p["ci95_high"]
     back = yaml.safe_load((tmp_path / "out" / "calibrated_hot.yaml").read_text())
     assert back["heat"]["gas_temperature"] == "800 K" and back["heat"]["exchange"].endswith("1/m")
+
+
+# --------------------------------------------------------------------- issue 21: hardening
+
+
+def _moving_profile(case: dict) -> dict:
+    """A profile model whose positions follow kiln.length (as kiln_profiles' cells do)."""
+    from rotarykiln.units import to_si
+
+    length = to_si("kiln.length", case["kiln"]["length"], "length")
+    return {f"bed_temperature@{z:.4f}": 300.0 + 100.0 * z for z in np.linspace(0, length, 5)}
+
+
+def _infinite_output(case: dict) -> dict:
+    return {"bed_outlet_temperature_K": float("inf")}
+
+
+def _out_of_memory(case: dict) -> dict:
+    raise MemoryError("Unable to allocate 1.5 GiB")
+
+
+@pytest.mark.parametrize(
+    ("column", "bad", "match"),
+    [
+        ("uncertainty", 1e-300, r"row 1: uncertainty 1e-300 is not in \[1e-12, 1e\+15\]"),
+        ("uncertainty", float("inf"), r"row 1: uncertainty inf is not in"),
+        ("value", 1e308, r"row 1: value 1e\+308 is not a number in \[-1e\+15, 1e\+15\]"),
+        ("value", float("nan"), "row 1: value nan is not a number"),
+        ("z", 1e300, r"row 1: z = 1e\+300 m is not a position in \[0, 10000\] m"),
+        ("z", "1\nm", r"row 1: z = '1\\nm' is not a number \(m\) or empty"),
+    ],
+)
+def test_data_values_out_of_their_ranges_are_refused_at_load(column, bad, match):
+    # were: a ValueError traceback (1e-300), a "success" with an infinite rms residual (1e308)
+    data = _synthetic(0).astype({column: object})
+    data.loc[0, column] = bad
+    with pytest.raises(InputError, match=match) as e:
+        read_measurements(data)
+    assert "\n" not in str(e.value)
+
+
+def test_a_data_file_with_too_many_rows_is_refused_at_load(tmp_path):
+    # was "solver failed: Unable to allocate" after the whole file was read
+    p = tmp_path / "big.csv"
+    p.write_text("quantity,z,value,uncertainty\n" + "bed,1,400,5\n" * 100_001)
+    with pytest.raises(InputError, match="more than 100,000 rows"):
+        read_measurements(p)
+
+
+def test_a_non_finite_model_output_is_a_convergence_error_not_a_success():
+    data = pd.DataFrame(
+        {"quantity": ["bed_outlet_temperature_K"], "z": [None], "value": [500.0], "uncertainty": 5}
+    )
+    with pytest.raises(ConvergenceError, match="non-finite residual"):
+        calibrate(_infinite_output, EXPONENTIAL_CASE, ["heat.exchange=1 1/m"], data)
+
+
+def test_a_memory_error_is_not_reported_as_a_solver_failure():
+    with pytest.raises(MemoryError):
+        calibrate(_out_of_memory, EXPONENTIAL_CASE, ["heat.exchange=1 1/m"], _synthetic(0))
+
+
+def test_fitting_a_field_that_moves_the_profile_positions_says_what_can_be_fitted():
+    # was a raw KeyError text ('bed_temperature@0.0610') reported as a solver failure
+    data = _synthetic(0).iloc[:4]
+    with pytest.raises(InputError, match="kiln.length cannot be fitted") as e:
+        calibrate(_moving_profile, EXPONENTIAL_CASE, ["kiln.length=2 m [1.5 m, 3 m]"], data)
+    msg = str(e.value)
+    assert "\n" not in msg and "Fields that can be fitted" in msg and "KeyError" not in msg
+
+
+def test_calibrate_command_refuses_bad_data_in_one_line(tmp_path, capsys):
+    rows = "quantity,z,value,uncertainty\nbed,0.5,403.7,{u}\nbed,1.0,480.5,5\n"
+    p = tmp_path / "d.csv"
+    case = tmp_path / "exp.yaml"
+    case.write_text(yaml.safe_dump(EXPONENTIAL_CASE))
+    model = "rotarykiln.studies.examples:exponential_heating"
+    for u, match in (
+        ("1e-300", "uncertainty 1e-300 is not in"),
+        ("1e400", "uncertainty 1e400 is not in"),
+    ):
+        p.write_text(rows.format(u=u))
+        argv = ["calibrate", str(case), "--model", model, "--data", str(p)]
+        code = main([*argv, "--fit", "heat.exchange=1 1/m", "--out", str(tmp_path / "o")])
+        err = capsys.readouterr().err.strip().splitlines()
+        assert code == 2 and len(err) == 1 and match in err[0], err
+    assert not (tmp_path / "o").exists()

@@ -24,7 +24,7 @@ from __future__ import annotations
 import argparse
 
 from rotarykiln.commands._args import check_count, check_out, out_dir, plain, print_json
-from rotarykiln.commands.sweep import _load_case, _load_model
+from rotarykiln.commands.sweep import _load_case, _load_model, check_printable
 from rotarykiln.errors import InputError
 from rotarykiln.outputs import write_frame_atomic, write_json_atomic
 from rotarykiln.studies.calibration import (
@@ -79,16 +79,12 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    check_printable(args, ("case",))
     check_count("--workers", args.workers, 1, 1024)
     check_count("--max-evaluations", args.max_evaluations, 1, 1_000_000)
     params = [parse_fit(f) for f in args.fit]
     check_out(args.out or "calibration")  # writable, checked before the fit
-    try:
-        data = read_measurements(args.data)
-    except ValueError as exc:  # pandas' EmptyDataError: a file with no columns at all
-        if isinstance(exc, InputError):
-            raise
-        raise InputError("--data", args.data, f"a readable CSV ({exc})") from None
+    data = read_measurements(args.data)  # within the data-file limits: one line if bad
     func = _load_model(args.model)
     if len(args.case) == 1:
         res = calibrate(

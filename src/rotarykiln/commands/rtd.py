@@ -10,11 +10,13 @@ are computed before any is written, so a failure writes nothing).
 from __future__ import annotations
 
 import argparse
+import math
 from pathlib import Path
 
 from rotarykiln.commands._args import add_quantity, check_out, get_quantity, out_dir, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.report import format_table
+from rotarykiln.studies.io import shown
 
 FIT_MODELS = ("open-open", "closed-closed", "open-closed", "gaussian", "tanks-in-series")
 
@@ -63,13 +65,23 @@ def _usage(parser):
     return show
 
 
+MAX_BASELINE = 1e15  # the largest tracer signal a file may hold (rtd.tracer.MAX_SIGNAL)
+
+
 def _baseline(text):
     if text is None or text == "auto":
         return text
     try:
-        return float(text)
+        value = float(text)
     except ValueError:
-        raise InputError("--baseline", text, 'a number or "auto"') from None
+        value = math.nan
+    if not abs(value) <= MAX_BASELINE:  # also NaN and inf
+        raise InputError(
+            "--baseline",
+            shown(text),
+            f'a finite number in [-{MAX_BASELINE:g}, {MAX_BASELINE:g}] or "auto"',
+        )
+    return value
 
 
 def _fit_figure(fit):
@@ -87,19 +99,24 @@ def _fit_figure(fit):
 
 def run_fit(args: argparse.Namespace) -> int:
     from rotarykiln.case import Length
+    from rotarykiln.commands.sweep import check_printable
     from rotarykiln.rtd.fitting import fit_tracer
     from rotarykiln.rtd.tracer import analyse_tracer, read_tracer_csv
 
+    check_printable(args, ("data",))
     if args.time_unit is not None:  # checked even when the header gives the unit
         from rotarykiln.units import to_si
 
-        if not args.time_unit.strip() or args.time_unit.strip()[0].isdigit():
-            raise InputError("--time-unit", args.time_unit, "a unit of time (s, min, h)")
-        to_si("--time-unit", f"1 {args.time_unit}", "time")
+        unit = args.time_unit.strip()
+        if not unit or unit[0].isdigit() or shown(unit) != unit:
+            raise InputError("--time-unit", shown(args.time_unit), "a unit of time (s, min, h)")
+        to_si("--time-unit", f"1 {unit}", "time")
     length = get_quantity(args, "length", "length", within=Length)
+    baseline = _baseline(args.baseline)
     check_out(args.out)  # writable, before the fit; created only if there is a result
+    # at most MAX_DATA_ROWS samples (studies.io): the tables written are as bounded
     t, signal, name = read_tracer_csv(args.data, time_unit=args.time_unit)
-    tracer = analyse_tracer(t, signal, kind=args.kind, baseline=_baseline(args.baseline))
+    tracer = analyse_tracer(t, signal, kind=args.kind, baseline=baseline)
     fit = fit_tracer(tracer, model=args.model, length=length)
     summary = {"data": str(args.data), "signal": name, "samples": int(t.size)}
     summary.update(
@@ -123,8 +140,10 @@ def run_fit(args: argparse.Namespace) -> int:
 def run_predict(args: argparse.Namespace) -> int:
     from rotarykiln.case import load_case
     from rotarykiln.commands.run import case_path
+    from rotarykiln.commands.sweep import check_printable
     from rotarykiln.rtd.predict import predict_from_case
 
+    check_printable(args, ("case",))
     case = load_case(case_path(args.case))
     check_out(args.out)
     pred = predict_from_case(case)

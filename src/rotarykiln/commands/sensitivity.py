@@ -32,13 +32,14 @@ from rotarykiln.commands.sweep import (
     _load_model,
     add_study_options,
     check_design_values,
+    check_printable,
     check_study_options,
     report_warnings,
     runner_options,
 )
 from rotarykiln.errors import InputError
 from rotarykiln.outputs import write_frame_atomic, write_json_atomic
-from rotarykiln.studies.design import as_params
+from rotarykiln.studies.design import as_params, check_design_size
 from rotarykiln.studies.sensitivity import METHODS, morris_indices, sobol_indices
 from rotarykiln.studies.uncertainty import propagate
 
@@ -85,12 +86,31 @@ def check_param_ranges(base: dict, params, model: str) -> None:
     check_design_values(base, design, "--param", model)
 
 
+MIN_N = {"sobol": 2, "morris": 2, "uncertainty": 2}
+"""Smallest --n of each method (Sobol and Morris: two base samples or trajectories; uncertainty:
+two samples for a standard deviation)."""
+CASES = {"sobol": ("n (d + 2)", 2), "morris": ("n (d + 1)", 1), "uncertainty": ("n + 1", None)}
+"""How many cases each method runs for --n = n and d parameters."""
+
+
+def design_cases(method: str, n: int, d: int) -> int:
+    """Cases run by ``method`` for ``--n n`` and ``d`` parameters."""
+    extra = CASES[method][1]
+    return n + 1 if extra is None else n * (d + extra)
+
+
 def run(args) -> int:
+    check_printable(args, ("case",))
     if not args.param:
         raise InputError("--param", message="--param: missing (at least one PATH=DIST(ARGS))")
-    check_count("--n", args.n, 1, MAX_CASES)
+    check_count("--n", args.n, MIN_N[args.method], MAX_CASES)
     check_study_options(args)
     params = as_params(args.param)
+    check_design_size(
+        design_cases(args.method, args.n, len(params)),
+        "--n",
+        f"{args.method}: {CASES[args.method][0]} with n = {args.n}, d = {len(params)}",
+    )
     base = _load_case(args.case)
     func = _load_model(args.model)
     check_param_ranges(base, params, args.model)

@@ -34,7 +34,14 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.commands._args import check_count, out_dir, plain, print_json
 from rotarykiln.errors import InputError
 from rotarykiln.studies import grid, one_at_a_time, run_sweep
-from rotarykiln.studies.design import as_params, latin_hypercube, monte_carlo, sobol_sequence
+from rotarykiln.studies.design import (
+    MAX_DESIGN_CASES,
+    as_params,
+    latin_hypercube,
+    monte_carlo,
+    sobol_sequence,
+)
+from rotarykiln.studies.io import shown
 from rotarykiln.studies.runner import EXECUTORS
 
 SAMPLED = {"lhs": latin_hypercube, "sobol": sobol_sequence, "mc": monte_carlo}
@@ -111,11 +118,26 @@ def add_study_options(p, params: bool = True) -> None:
     )
 
 
-MAX_CASES = 100_000  # cases of one design (--lhs/--sobol/--mc N, sensitivity --n)
+MAX_CASES = MAX_DESIGN_CASES  # cases of any design (grid, oat, --lhs/--sobol/--mc N, sensitivity)
+
+
+def check_printable(args, positional: tuple[str, ...] = ()) -> None:
+    """Refuse any text argument with a control character (a newline, a tab, an escape): every
+    message that quotes an argument then stays on one line, whatever echoes it."""
+    for key, value in vars(args).items():
+        if key in ("func", "command") or key.endswith("_command"):
+            continue
+        for item in value if isinstance(value, list | tuple) else [value]:
+            if isinstance(item, str) and not item.isprintable():
+                name = key if key in positional else f"--{key.replace('_', '-')}"
+                raise InputError(
+                    name, shown(item), "text without control characters (newline, tab...)"
+                )
 
 
 def check_study_options(args) -> None:
     """The shared options in their ranges (one line naming the option otherwise)."""
+    check_printable(args, ("case", "data"))
     check_count("--workers", getattr(args, "workers", None), 1, 1024)
     check_count("--seed", getattr(args, "seed", None), 0, 2**32 - 1)
 
@@ -142,8 +164,9 @@ def check_design_values(base: dict, design, option: str, model: str) -> None:
         for value in items:
             try:
                 parse_case(with_values(base, {path: value}))
-            except InputError as exc:
-                raise InputError(option, message=f"{option}: {exc}") from None
+            except InputError as exc:  # one line whatever the case loader quoted
+                text = str(exc).replace("\r", "\\r").replace("\n", "\\n")
+                raise InputError(option, message=f"{option}: {text}") from None
 
 
 def runner_options(args, folder) -> dict:
@@ -177,7 +200,15 @@ def _ranges(items: list[str], option: str) -> dict[str, list]:
     for item in items:
         path, sep, values = item.partition("=")
         if not sep or not path.strip() or not values.strip():
-            raise InputError(option, item, 'PATH=V1,V2,... e.g. operation.speed="1 rpm,2 rpm"')
+            raise InputError(
+                option, shown(item), 'PATH=V1,V2,... e.g. operation.speed="1 rpm,2 rpm"'
+            )
+        if path.strip() in out:
+            raise InputError(
+                option,
+                shown(path.strip()),
+                f"given once (its values in one {option} PATH=V1,V2,...)",
+            )
         parsed = []
         for v in values.split(","):
             v = v.strip()
@@ -219,6 +250,7 @@ def _load_case(spec: str) -> dict:
 
 
 def run(args) -> int:
+    check_printable(args, ("case",))
     kinds = [k for k in ("grid", "oat") if getattr(args, k)]
     kinds += [k for k in SAMPLED if getattr(args, k) is not None]
     if len(kinds) != 1:

@@ -55,11 +55,13 @@ from functools import lru_cache
 import numpy as np
 from scipy import special
 
-from rotarykiln.errors import InputError, check_positive
+from rotarykiln.errors import InputError, check_positive, check_range
 from rotarykiln.rtd._laplace import talbot_inverse
 
 __all__ = [
+    "ASYMPTOTIC_PECLET",
     "MODELS",
+    "SHAPE_RANGE",
     "ModelSpec",
     "closed_closed_cdf",
     "closed_closed_exit_age",
@@ -86,12 +88,27 @@ __all__ = [
 
 SERIES_MAX_PECLET = 20.0  # above this the closed-closed series cancels badly; use Laplace inversion
 _SERIES_TERMS = 1000
+_SERIES_CHUNK = 200_000  # most (time, term) pairs of the series evaluated at once (memory)
+
+SHAPE_RANGE = (1e-6, 1e10)
+"""Peclet numbers and numbers of tanks accepted by every model, [-]: from a fully mixed vessel
+(the open-open mean is then 2e6 space times) to a plug flow with a spread of 1e-5 of the mean;
+outside, the moments overflow or the densities are no longer representable."""
+
+ASYMPTOTIC_PECLET = 1e5
+"""Above this Peclet number the closed-closed and open-closed densities are the open-open one
+with its 1/Pe and 1/Pe^2 corrections (:func:`_boundary_corrected`; relative error about
+Pe^-3/2), instead of a Laplace inversion whose nodes grow as sqrt(Pe)."""
+
+
+def _check_shape(name: str, value) -> None:
+    check_range(name, value, *SHAPE_RANGE, closed_low=True, closed_high=True)
 
 
 def _prepare(t, tau, shape, shape_name="peclet"):
     check_positive("tau", tau, "s")
     if shape_name:
-        check_positive(shape_name, shape)
+        _check_shape(shape_name, shape)
     t = np.asarray(t, dtype=float)
     if not np.all(np.isfinite(t)):
         raise InputError("t", "a non-finite time", "finite")
@@ -222,7 +239,7 @@ def open_open_moments(tau, peclet):
     al. (2015) Powder Technol. 269, 554-565, eqs. 11-14.
     """
     check_positive("tau", tau, "s")
-    check_positive("peclet", peclet)
+    _check_shape("peclet", peclet)
     return tau * (1.0 + 2.0 / peclet), tau**2 * (2.0 / peclet + 8.0 / peclet**2)
 
 
@@ -279,6 +296,34 @@ def _invert(log_g, theta, pe, cumulative=False):
 
     diff = talbot_inverse(log_diff, theta[pos], shift=-pe / 4.0, sharpness=pe / 4.0)
     out[pos] = open_open_cdf(theta[pos], 1.0, pe) + diff
+    return out
+
+
+def _boundary_corrected(theta, pe, a, b, cumulative=False):
+    r"""E(theta) (or F) of a dispersion model at a high Peclet number from the open-open form.
+
+    For :math:`Pe \gg 1` the transfer function is :math:`G_{oo}(s)(1 + a u + b u^2 + O(u^3))`
+    with :math:`u = s/Pe` (the :math:`e^{-Pe q}` term of :math:`G_{cc}` is negligible):
+    closed-closed :math:`4q^2/(1+q)^2 = 1 + 2u - 3u^2`, open-closed :math:`2q/(1+q) = 1 + u -
+    2u^2`. As :math:`E_{oo}` and :math:`E_{oo}'` vanish at 0, :math:`E = E_{oo} +
+    (a/Pe)E_{oo}' + (b/Pe^2)E_{oo}''` and :math:`F = F_{oo} + (a/Pe)E_{oo} + (b/Pe^2)E_{oo}'`;
+    the relevant :math:`s \sim \sqrt{Pe}`, so the error is of order :math:`Pe^{-3/2}`. The
+    means and variances are those of the exact models to :math:`O(Pe^{-2})`.
+    """
+    out = np.zeros_like(theta)
+    pos = theta > 0
+    th = theta[pos]
+    e = open_open_exit_age(th, 1.0, pe)
+    # g = d ln E_oo / d theta = -1/(2 theta) + Pe (1/theta^2 - 1)/4, kept as h = g/Pe
+    h = -0.5 / (th * pe) + 0.25 * (1.0 / th**2 - 1.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        if cumulative:
+            corr = e * (a + b * h) / pe
+            val = open_open_cdf(th, 1.0, pe) + corr
+        else:
+            dg = 0.5 / (th**2 * pe**2) - 0.5 / (th**3 * pe)  # g' / Pe^2
+            val = e * (1.0 + a * h + b * (h * h + dg))
+    out[pos] = np.where(e > 0, val, open_open_cdf(th, 1.0, pe) if cumulative else 0.0)
     return out
 
 
@@ -348,8 +393,14 @@ def closed_closed_series(theta, peclet, n_terms=_SERIES_TERMS):
     needed = int(np.ceil(np.sqrt(40.0 * pe / theta_min) / np.pi)) + 2
     mu, coef = _closed_closed_terms(pe, n_terms)
     mu, coef = mu[:needed], coef[:needed]
-    expo = pe / 2.0 - pe * th / 4.0 - mu**2 * th / pe
-    e = (np.exp(expo) * coef).sum(axis=1)
+    step = max(1, _SERIES_CHUNK // mu.size)  # times per block: bounded memory
+    e = np.concatenate(
+        [
+            (np.exp(pe / 2.0 - pe * b / 4.0 - mu**2 * b / pe) * coef).sum(axis=1)
+            for b in (th[i : i + step] for i in range(0, th.shape[0], step))
+        ]
+        or [np.zeros(0)]
+    )
     return e.reshape(theta.shape)
 
 
@@ -410,6 +461,8 @@ def closed_closed_exit_age(t, tau, peclet, method="auto"):
         raise InputError("method", method, "one of auto, series, laplace")
     theta = t / tau
     use_series = method == "series" or (method == "auto" and pe <= SERIES_MAX_PECLET)
+    if method == "auto" and pe > ASYMPTOTIC_PECLET:
+        return _boundary_corrected(theta, pe, 2.0, -3.0) / tau
     if not use_series:
         return _invert(_log_g_closed_closed(pe), theta, pe) / tau
     theta_min = 40.0 * pe / (_SERIES_TERMS * np.pi) ** 2
@@ -450,6 +503,8 @@ def closed_closed_cdf(t, tau, peclet):
     al. (2015) Powder Technol. 269, 554-565, eq. 8.
     """
     t, tau, pe = _prepare(t, tau, peclet)
+    if pe > ASYMPTOTIC_PECLET:
+        return np.clip(_boundary_corrected(t / tau, pe, 2.0, -3.0, cumulative=True), 0.0, 1.0)
     return np.clip(_invert(_log_g_closed_closed(pe), t / tau, pe, cumulative=True), 0.0, 1.0)
 
 
@@ -480,7 +535,7 @@ def closed_closed_moments(tau, peclet):
     al. (2015) Powder Technol. 269, 554-565, eq. 8.
     """
     check_positive("tau", tau, "s")
-    check_positive("peclet", peclet)
+    _check_shape("peclet", peclet)
     var = 2.0 / peclet - 2.0 * (1.0 - np.exp(-peclet)) / peclet**2
     return tau, tau**2 * float(var)
 
@@ -518,6 +573,8 @@ def open_closed_exit_age(t, tau, peclet):
     Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     t, tau, pe = _prepare(t, tau, peclet)
+    if pe > ASYMPTOTIC_PECLET:
+        return _boundary_corrected(t / tau, pe, 1.0, -2.0) / tau
     return _invert(_log_g_open_closed(pe), t / tau, pe) / tau
 
 
@@ -548,6 +605,8 @@ def open_closed_cdf(t, tau, peclet):
     Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     t, tau, pe = _prepare(t, tau, peclet)
+    if pe > ASYMPTOTIC_PECLET:
+        return np.clip(_boundary_corrected(t / tau, pe, 1.0, -2.0, cumulative=True), 0.0, 1.0)
     return np.clip(_invert(_log_g_open_closed(pe), t / tau, pe, cumulative=True), 0.0, 1.0)
 
 
@@ -577,7 +636,7 @@ def open_closed_moments(tau, peclet):
     Levenspiel, O. (1999) Chemical Reaction Engineering, 3rd ed., ch. 13-14.
     """
     check_positive("tau", tau, "s")
-    check_positive("peclet", peclet)
+    _check_shape("peclet", peclet)
     return tau * (1.0 + 1.0 / peclet), tau**2 * (2.0 / peclet + 3.0 / peclet**2)
 
 
@@ -678,7 +737,7 @@ def gaussian_moments(tau, peclet):
     al. (2015) Powder Technol. 269, 554-565, eq. 10.
     """
     check_positive("tau", tau, "s")
-    check_positive("peclet", peclet)
+    _check_shape("peclet", peclet)
     return tau, 2.0 * tau**2 / peclet
 
 
@@ -781,7 +840,7 @@ def tanks_in_series_moments(tau, n_tanks):
     (tanks-in-series model).
     """
     check_positive("tau", tau, "s")
-    check_positive("n_tanks", n_tanks)
+    _check_shape("n_tanks", n_tanks)
     return tau, tau**2 / n_tanks
 
 

@@ -31,7 +31,7 @@ import pandas as pd
 from scipy import optimize, stats
 
 from rotarykiln.errors import ConvergenceError, InputError, check_positive
-from rotarykiln.rtd.dispersion import MODELS, get_model
+from rotarykiln.rtd.dispersion import MODELS, SHAPE_RANGE, get_model
 from rotarykiln.rtd.tracer import TracerResult
 from rotarykiln.tables import with_units
 
@@ -173,11 +173,23 @@ def moment_method(
     if spec.shape is None:
         raise InputError("model", model, "a model with a shape parameter (not plug flow)")
     s2 = variance / mean**2
+
+    def shape_in_range(p):
+        if not SHAPE_RANGE[0] <= p <= SHAPE_RANGE[1]:
+            raise InputError(
+                "variance",
+                f"{variance:g} s2 (sigma_theta^2 = {s2:.4g}, {spec.shape} = {p:.4g})",
+                f"reachable by the {model} model ({spec.shape} in "
+                f"[{SHAPE_RANGE[0]:g}, {SHAPE_RANGE[1]:g}])",
+            )
+        return p
+
     if model == "open-open" and convention == "paper":
-        p = float(open_open_peclet_from_variance(s2))
+        p = shape_in_range(float(open_open_peclet_from_variance(s2)))
         return MomentResult(model, convention, mean, variance, mean, p, length)
     if model == "tanks-in-series":
-        return MomentResult(model, convention, mean, variance, mean, 1.0 / s2, length)
+        p = shape_in_range(1.0 / s2)
+        return MomentResult(model, convention, mean, variance, mean, p, length)
     if convention == "paper":
 
         def g(logp):
@@ -395,9 +407,13 @@ def fit_rtd(
     scale = float(e.max())
 
     def residual(x):
-        # far from the data the trial parameters may overflow: a large residual steers back
+        # far from the data the trial parameters may overflow or leave the models' range
+        # (SHAPE_RANGE): a large residual steers back, without evaluating the model there
         with np.errstate(all="ignore"):
-            r = (spec.exit_age(t, np.exp(x[0]), np.exp(x[1])) - e) / scale
+            tau, shape = np.exp(x[0]), np.exp(x[1])
+            if not (0 < tau < np.inf and SHAPE_RANGE[0] <= shape <= SHAPE_RANGE[1]):
+                return np.full(t.size, 1e6)
+            r = (spec.exit_age(t, tau, shape) - e) / scale
         return np.where(np.isfinite(r), r, 1e6)
 
     x0 = np.log(np.asarray(guess, dtype=float))

@@ -15,6 +15,7 @@ that the mean of the predicted E(t) is the given mean residence time.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -29,7 +30,7 @@ from rotarykiln.rtd.correlations import (
     sai_dispersion_number,
     sherritt_dispersion,
 )
-from rotarykiln.rtd.dispersion import get_model
+from rotarykiln.rtd.dispersion import SHAPE_RANGE, get_model
 from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
 from rotarykiln.tables import with_units
 
@@ -136,20 +137,17 @@ def predict_rtd(
         raise InputError("model", model, "a dispersion model with a Peclet number")
     if (peclet is None) == (dispersion is None):
         raise InputError("peclet", peclet, "given, or else dispersion with length (exactly one)")
+    if isinstance(n_points, bool) or not isinstance(n_points, int) or not 2 <= n_points <= 100_000:
+        raise InputError("n_points", n_points, "a whole number in [2, 100000]")
     if peclet is not None:
-        check_positive("peclet", peclet)
+        _check_peclet("peclet", peclet)
         tau = mean_residence_time / spec.moments(1.0, peclet)[0]
     else:
         check_positive("dispersion", dispersion, "m2/s")
         if length is None:
             raise InputError("length", None, "given with dispersion")
         check_positive("length", length, "m")
-
-        def excess(tau):
-            return tau * spec.moments(1.0, length**2 / (dispersion * tau))[0] - mean_residence_time
-
-        tau = optimize.brentq(excess, 1e-9 * mean_residence_time, mean_residence_time, xtol=1e-12)
-        peclet = length**2 / (dispersion * tau)
+        tau, peclet = _tau_and_peclet(spec, mean_residence_time, dispersion, length)
     mean, var = spec.moments(tau, peclet)
     if t is None:
         sd = np.sqrt(var)
@@ -169,6 +167,40 @@ def predict_rtd(
     )
 
 
+def _check_peclet(field: str, peclet, source: str = "") -> None:
+    """Refuse a Peclet number outside the models' range (:data:`~.dispersion.SHAPE_RANGE`)."""
+    lo, hi = SHAPE_RANGE
+    if not (isinstance(peclet, int | float) and lo <= peclet <= hi):
+        shown = f"{peclet:.3g}" if isinstance(peclet, int | float) else str(peclet)
+        raise InputError(field, f"{shown}{source}", f"in [{lo:g}, {hi:g}]")
+
+
+def _tau_and_peclet(
+    spec, mrt: float, dispersion: float, length: float, field: str = "peclet", source: str = ""
+) -> tuple[float, float]:
+    """Space time and Peclet number of a model whose mean is ``mrt`` with D = ``dispersion``:
+    Pe = L^2/(D tau) and tau mean(Pe) = mrt, solved over the Peclet numbers of
+    :data:`~.dispersion.SHAPE_RANGE` in logarithms (no overflow for any D, L and mrt > 0)."""
+    log_l2_d = 2.0 * math.log(length) - math.log(dispersion)
+
+    def excess(log_pe):  # log(tau mean(Pe) / mrt), decreasing in Pe
+        pe = min(max(math.exp(log_pe), SHAPE_RANGE[0]), SHAPE_RANGE[1])
+        return log_l2_d - log_pe + math.log(spec.moments(1.0, pe)[0]) - math.log(mrt)
+
+    lo, hi = (math.log(v) for v in SHAPE_RANGE)
+    if excess(lo) < 0 or excess(hi) > 0:
+        estimate = (log_l2_d - math.log(mrt)) / math.log(10.0)  # log10 of L^2/(D mrt)
+        raise InputError(
+            field,
+            f"about 1e{estimate:+.1f}{source} (D = {dispersion:.3g} m2/s, L = {length:.3g} m, "
+            f"mean residence time {mrt:.3g} s)",
+            f"in [{SHAPE_RANGE[0]:g}, {SHAPE_RANGE[1]:g}]",
+        )
+    log_pe = optimize.brentq(excess, lo, hi, xtol=1e-13, rtol=1e-14)
+    peclet = min(max(math.exp(log_pe), SHAPE_RANGE[0]), SHAPE_RANGE[1])
+    return mrt / spec.moments(1.0, peclet)[0], peclet
+
+
 def _need(value, field: str, why: str):
     if value is None:
         raise InputError(field, "missing", f"given ({why})")
@@ -179,6 +211,7 @@ def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
     """Peclet number of a case from ``rtd.peclet`` or the chosen correlation, and its source."""
     sec, kiln, op, mat = case.rtd, case.kiln, case.operation, case.material
     if sec.peclet is not None:
+        _check_peclet("rtd.peclet", sec.peclet)
         return sec.peclet, "given"
     name = sec.correlation
     why = f"for the {name} correlation"
@@ -187,7 +220,11 @@ def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
         rho = sec.tracer_density or _need(mat.bulk_density, "material.bulk_density", why)
         if not kiln.slope > 0:
             raise InputError("kiln.slope", kiln.slope, f"> 0 {why}")
-        return 1.0 / float(sai_dispersion_number(theta, kiln.slope, op.speed, rho)), name
+        with np.errstate(all="ignore"):
+            number = float(sai_dispersion_number(theta, kiln.slope, op.speed, rho))
+            pe = 1.0 / number if number > 0 else math.inf
+        _check_peclet("rtd.peclet", pe, f" (from the {name} correlation; or give rtd.peclet)")
+        return pe, name
     if name == "sherritt2003":
         dp = _need(mat.particle_size, "material.particle_size", why)
         x = sec.holdup_fraction
@@ -217,8 +254,18 @@ def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
                 kiln.diameter,
             )
         )
-    tau = predict_rtd(mean_residence_time, dispersion=d, length=kiln.length, model=sec.model).tau
-    return kiln.length**2 / (d * tau), name
+    if not (math.isfinite(d) and d > 0):
+        raise InputError(
+            "rtd.correlation",
+            f"{name}, which gives D = {d:.3g} m2/s for this case",
+            "a correlation giving a dispersion coefficient > 0 (check operation.feed and the "
+            "material, or give rtd.peclet)",
+        )
+    source = f" from the {name} correlation (or give rtd.peclet)"
+    _, pe = _tau_and_peclet(
+        get_model(sec.model), mean_residence_time, d, kiln.length, "rtd.peclet", source
+    )
+    return pe, name
 
 
 def predict_from_case(case, *, transport: Callable | None = None) -> RTDPrediction:

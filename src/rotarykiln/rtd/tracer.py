@@ -25,7 +25,6 @@ from __future__ import annotations
 import re
 import warnings
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -44,6 +43,11 @@ __all__ = [
 ]
 
 SIGNALS = ("concentration", "mass_fraction", "conductivity", "tracer_mass")
+MAX_TIME = 1e10
+"""Largest time of a tracer file, s (about 300 years; the longest mean residence time a case
+accepts)."""
+MAX_SIGNAL = 1e15
+"""Largest magnitude of a tracer signal (any unit): sums of signal x time stay finite."""
 
 
 class TruncatedCurveWarning(UserWarning):
@@ -358,37 +362,48 @@ def read_tracer_csv(path, *, time_unit: str | None = None) -> tuple[np.ndarray, 
     -------
     (t, signal, signal_name)
         Times [s], signal values (as in the file), and the signal column header.
+
+    Raises
+    ------
+    InputError
+        One line naming the file: beyond the data-file limits of
+        :func:`rotarykiln.studies.io.read_data_csv` (size, 100,000 rows, UTF-8), no unit of
+        time, a cell that is not a number, a time beyond :data:`MAX_TIME` s or a signal beyond
+        :data:`MAX_SIGNAL`.
     """
-    path = Path(path)
-    try:
-        frame = pd.read_csv(path, comment="#")
-    except FileNotFoundError:
-        raise InputError(str(path), message=f"{path}: no such file") from None
-    except (OSError, pd.errors.ParserError, UnicodeDecodeError, pd.errors.EmptyDataError) as exc:
-        raise InputError(str(path), message=f"{path}: not a readable CSV file ({exc})") from None
+    from rotarykiln.studies.io import read_data_csv, shown
+
+    name = shown(str(path), 200)
+    frame = read_data_csv(path, "", what="tracer file", comment="#", dtype=str)
     if frame.shape[1] < 2:
-        raise InputError(str(path), message=f"{path}: needs two columns, time and tracer signal")
+        raise InputError(str(path), message=f"{name}: needs two columns, time and tracer signal")
     time_header = str(frame.columns[0])
     m = _UNIT.match(time_header)
     unit = m.group("unit") if m else time_unit
     if unit is None:
         raise InputError(
-            f"{path}: column {time_header!r}",
-            message=f'{path}: the time column "{time_header}" has no unit; write it as '
+            f"{name}: column {shown(time_header)}",
+            message=f"{name}: the time column {shown(time_header)} has no unit; write it as "
             '"time [min]" or give the unit (--time-unit min)',
         )
-    factor = to_si(f"{path}: time unit", f"1 {unit}", "time")
+    factor = to_si(f"{name}: time unit", f"1 {shown(unit)}", "time")
     columns = frame.iloc[:, :2]
     numeric = columns.apply(pd.to_numeric, errors="coerce")
     bad = numeric.isna().any(axis=1)
     if bad.any():
         row = int(np.argmax(bad.to_numpy()))
-        raise InputError(
-            str(path),
-            message=f"{path}: line {row + 2}: {columns.iloc[row].tolist()} is not two numbers",
-        )
-    return (
-        numeric.iloc[:, 0].to_numpy() * factor,
-        numeric.iloc[:, 1].to_numpy(),
-        str(frame.columns[1]),
-    )
+        cells = ", ".join(shown(v, 40) for v in columns.iloc[row].tolist())
+        raise InputError(str(path), message=f"{name}: line {row + 2}: {cells} is not two numbers")
+    values = numeric.to_numpy(float)
+    t = values[:, 0] * factor
+    limits = (("time", t, MAX_TIME, "s"), ("signal", values[:, 1], MAX_SIGNAL, ""))
+    for what, x, high, unit_si in limits:
+        out = ~(np.abs(x) <= high)  # NaN and inf too
+        if out.any():
+            row = int(np.argmax(out))
+            raise InputError(
+                str(path),
+                message=f"{name}: line {row + 2}: {what} {x[row]:.6g}{' ' + unit_si if unit_si else ''}"
+                f" is not a finite number in [-{high:g}, {high:g}]",
+            )
+    return t, values[:, 1], str(frame.columns[1])

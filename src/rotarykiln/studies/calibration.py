@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import ConvergenceError, InputError
-from rotarykiln.studies.io import save_figure_atomic
+from rotarykiln.studies.io import MAX_DATA_ROWS, read_data_csv, save_figure_atomic, shown
 from rotarykiln.studies.models import profile_columns
 from rotarykiln.studies.paths import get_path, with_values
 from rotarykiln.tables import with_units
@@ -42,6 +42,14 @@ __all__ = [
     "parse_fit",
     "read_measurements",
 ]
+
+MAX_VALUE = 1e15
+"""Largest magnitude of a measured value or uncertainty (in the output's unit)."""
+MIN_UNCERTAINTY = 1e-12
+"""Smallest uncertainty: the weighted residuals (value/uncertainty) and their squares stay
+far from overflow."""
+MAX_POSITION = 1e4
+"""Largest position z of a measured point, m (the longest kiln length a case accepts)."""
 
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _FIT = re.compile(rf"^\s*({_NUM})\s*([^\[]*?)\s*(?:\[\s*(.+?)\s*,\s*(.+?)\s*\])?\s*$")
@@ -190,8 +198,10 @@ def read_measurements(source) -> Measurements:
     """Read measured data from a CSV path or a DataFrame (quantity, z, value, uncertainty).
 
     ``z`` may carry a unit in its header (``z [m]``, ``z_m``; metres) and is empty for scalar
-    outputs; ``uncertainty`` must be > 0. An optional ``case`` column names the case of each
-    point, for a fit over several cases (:func:`calibrate_cases`).
+    outputs; values within +-:data:`MAX_VALUE`, uncertainties in [:data:`MIN_UNCERTAINTY`,
+    :data:`MAX_VALUE`], z in [0, :data:`MAX_POSITION`] m. An optional ``case`` column names the
+    case of each point, for a fit over several cases (:func:`calibrate_cases`). A file is read
+    within the limits of :func:`rotarykiln.studies.io.read_data_csv` (size, rows, UTF-8).
 
     Parameters
     ----------
@@ -217,12 +227,13 @@ def read_measurements(source) -> Measurements:
     if isinstance(source, pd.DataFrame):
         df = source.copy()
         where = "measurements"
+        if len(df) > MAX_DATA_ROWS:
+            raise InputError(where, f"{len(df):,} rows", f"at most {MAX_DATA_ROWS:,} rows")
     else:
-        where = str(source)
-        try:
-            df = pd.read_csv(source, comment="#", skipinitialspace=True)
-        except (OSError, pd.errors.ParserError, UnicodeDecodeError) as exc:
-            raise InputError("--data", where, f"a readable CSV ({exc})") from None
+        where = shown(str(source), 200)
+        df = read_data_csv(
+            source, "--data", what="data file", comment="#", skipinitialspace=True, dtype=str
+        )
     cols = {}
     for c in df.columns:
         key = re.sub(r"[\s_]*[\[(].*$", "", str(c).strip().lower())
@@ -236,26 +247,46 @@ def read_measurements(source) -> Measurements:
             where,
             f"a CSV with columns quantity, z, value, uncertainty (missing {', '.join(missing)})",
         )
+    if df.columns.duplicated().any():
+        dup = df.columns[df.columns.duplicated()][0]
+        raise InputError("--data", where, f"a CSV with one {shown(dup)} column")
     if not len(df):
         raise InputError("--data", where, "a CSV with at least one data row")
     q = np.array([_normalise_quantity(v) for v in df["quantity"].fillna("")], dtype=object)
-    z = pd.to_numeric(df["z"], errors="coerce").to_numpy(float)
-    v = pd.to_numeric(df["value"], errors="coerce").to_numpy(float)
-    u = pd.to_numeric(df["uncertainty"], errors="coerce").to_numpy(float)
+    z = _numbers(df["z"])
+    v = _numbers(df["value"])
+    u = _numbers(df["uncertainty"])
     for i in range(len(df)):
         row = f"{where} row {i + 1}"
         if not q[i]:
             raise InputError(row, "an empty quantity", "a quantity name")
-        if not math.isfinite(v[i]):
-            raise InputError(row, df["value"].iloc[i], "a number (value)")
-        if not (math.isfinite(u[i]) and u[i] > 0):
-            raise InputError(row, df["uncertainty"].iloc[i], "an uncertainty > 0")
-        if not math.isnan(z[i]) and z[i] < 0:
-            raise InputError(row, f"z = {z[i]:g} m", "a position >= 0 m")
+        if len(q[i]) > 200:
+            raise InputError(row, f"a quantity of {len(q[i])} characters", "a quantity name")
+        if not (math.isfinite(v[i]) and abs(v[i]) <= MAX_VALUE):
+            raise InputError(
+                row,
+                f"value {shown(df['value'].iloc[i])}",
+                f"a number in [-{MAX_VALUE:g}, {MAX_VALUE:g}]",
+            )
+        if not (math.isfinite(u[i]) and MIN_UNCERTAINTY <= u[i] <= MAX_VALUE):
+            raise InputError(
+                row,
+                f"uncertainty {shown(df['uncertainty'].iloc[i])}",
+                f"in [{MIN_UNCERTAINTY:g}, {MAX_VALUE:g}] (one standard deviation, > 0)",
+            )
+        if not math.isnan(z[i]) and not 0 <= z[i] <= MAX_POSITION:
+            raise InputError(row, f"z = {z[i]:g} m", f"a position in [0, {MAX_POSITION:g}] m")
+        if math.isnan(z[i]) and str(df["z"].iloc[i]).strip() not in ("", "nan", "None", "<NA>"):
+            raise InputError(row, f"z = {shown(df['z'].iloc[i])}", "a number (m) or empty")
     case = None
     if "case" in df:
         case = np.array([str(c).strip() for c in df["case"].fillna("")], dtype=object)
     return Measurements(q, z, v, u, case)
+
+
+def _numbers(column: pd.Series) -> np.ndarray:
+    """A column as floats (NaN where a cell is not a number)."""
+    return pd.to_numeric(column, errors="coerce").to_numpy(float)
 
 
 def _absent_but_allowed(base: Mapping, path: str) -> bool:
@@ -313,11 +344,18 @@ class _Predictor:
     def __call__(self, outputs: Mapping) -> np.ndarray:
         out = np.empty(len(self.plan))
         for i, (kind, q, z, zs, cols) in enumerate(self.plan):
-            if kind == "scalar":
-                out[i] = float(outputs[q])
-            else:
-                out[i] = np.interp(z, zs, [float(outputs[c]) for c in cols])
+            try:
+                if kind == "scalar":
+                    out[i] = float(outputs[q])
+                else:
+                    out[i] = np.interp(z, zs, [float(outputs[c]) for c in cols])
+            except KeyError:  # the fitted values moved the profile positions or dropped an output
+                raise _OutputsChanged(q) from None
         return out
+
+
+class _OutputsChanged(Exception):
+    """The model's outputs (profile positions, output names) changed with the fitted values."""
 
 
 @dataclass(frozen=True)
@@ -693,38 +731,68 @@ def _fit(func, cases, fit, meas, create, absolute_sigma, diff_step, max_nfev, wo
         cache[key] = y
         return y
 
+    def at(x) -> str:
+        return ", ".join(f"{p.path}={p.value(v)}" for p, v in zip(fit, x, strict=True))
+
     def residual(x):
         try:
-            return (model(x) - meas.value) / meas.uncertainty
-        except InputError:
+            r = (model(x) - meas.value) / meas.uncertainty
+        except (InputError, MemoryError):  # a user's mistake, or memory: not a solver failure
             raise
+        except _OutputsChanged as exc:
+            raise InputError(
+                "--fit",
+                message=f"--fit: {', '.join(p.path for p in fit)} cannot be fitted: changing it "
+                f"changes the model's outputs ({exc} moved or vanished; kiln.length and "
+                "solver.cells move the profile positions). Fields that can be fitted: numeric "
+                "case fields that keep the outputs, e.g. gas.flow, wall.emissivity",
+            ) from None
         except Exception as exc:  # a failed solve inside the fit
+            raise ConvergenceError(f"the model failed at {at(x)}: {shown(exc, 300)}") from exc
+        if not np.all(np.isfinite(r)):
+            i = int(np.argmax(~np.isfinite(r)))
             raise ConvergenceError(
-                f"the model failed at {', '.join(f'{p.path}={p.value(v)}' for p, v in zip(fit, x, strict=True))}: {exc}"
-            ) from exc
+                f"the model gave a non-finite residual at {at(x)}",
+                point=i + 1,
+                quantity=str(meas.quantity[i]),
+            )
+        return r
 
     x0 = np.array([p.x0 for p in fit])
     lo = np.array([p.lower for p in fit])
     hi = np.array([p.upper for p in fit])
     try:
-        sol = optimize.least_squares(
-            residual,
-            x0,
-            bounds=(lo, hi),
-            x_scale="jac",
-            diff_step=diff_step,
-            max_nfev=max_nfev,
-            method="trf",
-        )
+        with np.errstate(over="ignore", invalid="ignore"):  # checked below
+            sol = optimize.least_squares(
+                residual,
+                x0,
+                bounds=(lo, hi),
+                x_scale="jac",
+                diff_step=diff_step,
+                max_nfev=max_nfev,
+                method="trf",
+            )
         pred = model(sol.x)
+    except ValueError as exc:  # scipy's own checks (a non-finite Jacobian...)
+        if isinstance(exc, InputError):
+            raise
+        raise ConvergenceError(f"the least-squares fit failed: {shown(exc, 300)}") from None
     finally:
         if pool is not None:
             pool.shutdown(cancel_futures=True)
     r = sol.fun
-    chi2 = float(r @ r)
+    with np.errstate(over="ignore", invalid="ignore"):
+        chi2 = float(r @ r)
+        J = sol.jac
+        jtj = J.T @ J
     dof = len(meas) - len(fit)
-    J = sol.jac
-    cov = np.linalg.pinv(J.T @ J)
+    if not (np.all(np.isfinite(r)) and math.isfinite(chi2) and np.all(np.isfinite(jtj))):
+        raise ConvergenceError(
+            "the fit's residuals or Jacobian are not finite (values or uncertainties of very "
+            "different magnitudes?)",
+            chi2=chi2,
+        )
+    cov = np.linalg.pinv(jtj)
     if not absolute_sigma:
         if dof <= 0:
             raise InputError(
@@ -735,6 +803,8 @@ def _fit(func, cases, fit, meas, create, absolute_sigma, diff_step, max_nfev, wo
     else:
         q = stats.norm.ppf(0.975)
     se = np.sqrt(np.clip(np.diag(cov), 0, None))
+    if not (np.all(np.isfinite(cov)) and np.all(np.isfinite(sol.x))):
+        raise ConvergenceError("the fit's covariance is not finite", chi2=chi2)
     ci = np.column_stack([sol.x - q * se, sol.x + q * se])
     res_frame = meas.to_frame()
     res_frame["model"] = pred

@@ -19,10 +19,13 @@ from typing import Any
 import numpy as np
 
 from rotarykiln.errors import InputError
+from rotarykiln.studies.io import shown
 
 __all__ = [
     "DISTRIBUTIONS",
+    "MAX_DESIGN_CASES",
     "CaseSpec",
+    "check_design_size",
     "Param",
     "as_params",
     "cases_from_unit",
@@ -36,6 +39,43 @@ __all__ = [
 ]
 
 
+MAX_DESIGN_CASES = 100_000
+"""Most cases of one design, whatever its kind (grid, one at a time, sampled, sensitivity):
+checked from the counts before the design is built."""
+
+
+def check_design_size(cases: int, option: str, how: str = "") -> int:
+    """Refuse a design of more than :data:`MAX_DESIGN_CASES` cases, before it is built.
+
+    Parameters
+    ----------
+    cases : int
+        Number of cases the design would have.
+    option : str
+        The option or field that sets it (named in the message).
+    how : str
+        How the count follows from the inputs, e.g. "n (d + 2)".
+
+    Returns
+    -------
+    int
+        ``cases``.
+
+    Examples
+    --------
+    >>> check_design_size(10**6, "--grid", "4 values x 250000 values")
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: --grid: a design of 1000000 cases (4 values x 250000 values) is not at most 100000 cases
+    """
+    if cases > MAX_DESIGN_CASES:
+        detail = f" ({how})" if how else ""
+        raise InputError(
+            option, f"a design of {cases} cases{detail}", f"at most {MAX_DESIGN_CASES} cases"
+        )
+    return cases
+
+
 @dataclass(frozen=True)
 class CaseSpec:
     """One case of a sweep."""
@@ -43,6 +83,10 @@ class CaseSpec:
     case_id: int
     values: dict[str, Any] = field(default_factory=dict)
     group: str = "grid"
+
+
+def _counts(ranges: Mapping[str, list]) -> str:
+    return " x ".join(f"{len(v)} values of {shown(p, 40)}" for p, v in ranges.items())
 
 
 def _check_ranges(ranges: Mapping[str, Sequence]) -> dict[str, list]:
@@ -66,6 +110,7 @@ def grid(ranges: Mapping[str, Sequence]) -> list[CaseSpec]:
     """
     r = _check_ranges(ranges)
     paths = list(r)
+    check_design_size(math.prod(len(v) for v in r.values()), "--grid", _counts(r))
     return [
         CaseSpec(i, dict(zip(paths, combo, strict=True)), "grid")
         for i, combo in enumerate(itertools.product(*(r[p] for p in paths)))
@@ -81,6 +126,7 @@ def one_at_a_time(ranges: Mapping[str, Sequence], include_base: bool = True) -> 
     [('base', {}), ('a', {'a': 1}), ('a', {'a': 2}), ('b', {'b': 5})]
     """
     r = _check_ranges(ranges)
+    check_design_size(sum(len(v) for v in r.values()) + include_base, "--oat")
     cases = [CaseSpec(0, {}, "base")] if include_base else []
     for path, values in r.items():
         for v in values:
@@ -338,7 +384,7 @@ def as_params(params) -> list[Param]:
 def _check_n(n) -> int:
     if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
         raise InputError("study.n", n, "a whole number >= 1")
-    return int(n)
+    return check_design_size(int(n), "study.n")
 
 
 def cases_from_unit(params, unit_samples, group: str = "sample", start: int = 0) -> list[CaseSpec]:

@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 
 from rotarykiln.errors import ConvergenceError, InputError
-from rotarykiln.studies.design import Param, as_params, cases_from_unit
+from rotarykiln.studies.design import Param, as_params, cases_from_unit, check_design_size
 from rotarykiln.studies.io import save_figure_atomic
 from rotarykiln.studies.result import SweepResult
 from rotarykiln.studies.runner import run_sweep
@@ -214,6 +214,7 @@ def sobol_indices(
     params = as_params(params)
     if isinstance(n, bool) or not isinstance(n, int) or n < 2:
         raise InputError("--n", n, "a whole number >= 2 (a power of 2)")
+    check_design_size(n * (len(params) + 2), "--n", "Sobol: n (d + 2)")
     problem = _problem(params)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # SALib's balance warning for n not a power of 2
@@ -295,6 +296,7 @@ def morris_indices(
     params = as_params(params)
     if isinstance(n, bool) or not isinstance(n, int) or n < 2:
         raise InputError("--n", n, "a whole number of trajectories >= 2")
+    check_design_size(n * (len(params) + 1), "--n", "Morris: n (d + 1)")
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2 or levels % 2:
         raise InputError("--levels", levels, "an even whole number >= 2")
     problem = _problem(params)

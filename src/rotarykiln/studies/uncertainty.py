@@ -20,6 +20,7 @@ from rotarykiln.studies.design import (
     CaseSpec,
     Param,
     as_params,
+    check_design_size,
     latin_hypercube,
     monte_carlo,
     sobol_sequence,
@@ -216,6 +217,9 @@ def propagate(
     if design not in _DESIGNS:
         raise InputError("uncertainty.design", design, f"one of {', '.join(_DESIGNS)}")
     params = as_params(params)
+    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 2:
+        raise InputError("--n", n, "a whole number of samples >= 2 (a standard deviation)")
+    check_design_size(int(n) + 1, "--n", "n samples + the nominal case")
     pct = tuple(float(p) for p in percentiles)
     if len(pct) < 2 or any(not 0 <= p <= 100 for p in pct) or list(pct) != sorted(pct):
         raise InputError("uncertainty.percentiles", pct, "ascending values in [0, 100]")
@@ -230,7 +234,10 @@ def propagate(
         raise ConvergenceError(f"the nominal case failed: {nom['error']}")
     ok = f[(f["group"] != "nominal") & (f["error"] == "")]
     if len(ok) < 2:
-        first = f.loc[f["error"] != "", "error"].iloc[0]
-        raise ConvergenceError(f"{len(f) - 1 - len(ok)} of {len(f) - 1} samples failed ({first})")
+        errors = f.loc[f["error"] != "", "error"]
+        first = f" ({errors.iloc[0]})" if len(errors) else ""
+        raise ConvergenceError(
+            f"{len(f) - 1 - len(ok)} of {len(f) - 1} samples failed; at least 2 must run{first}"
+        )
     nominal = {o: nom[o] for o in res.outputs}
     return UncertaintyResult(tuple(params), res, nominal, pct)
