@@ -310,3 +310,26 @@ def test_version_and_help_import_no_command_module(argv, light):
     if argv == ["--help"]:
         for name in ("run", "sweep", "transient"):
             assert name in out.stdout
+
+
+def test_a_missing_extra_names_the_pip_install(monkeypatch):
+    """An optional package that is not installed: one line naming the extra to install."""
+    import builtins
+
+    from rotarykiln.errors import InputError
+    from rotarykiln.extras import require
+
+    real_import = builtins.__import__
+
+    def no_salib(name, *args, **kwargs):
+        if name.split(".")[0] == "SALib":
+            raise ImportError(f"No module named {name!r}", name=name)
+        return real_import(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", no_salib)
+    for mod in [m for m in __import__("sys").modules if m.split(".")[0] == "SALib"]:
+        monkeypatch.delitem(__import__("sys").modules, mod)
+    with pytest.raises(InputError) as info:
+        require("SALib.sample.sobol", "a Sobol sensitivity study")
+    text = str(info.value)
+    assert 'pip install "rotarykiln[studies]"' in text and "\n" not in text

@@ -207,8 +207,10 @@ def sobol_indices(
     Saltelli et al. (2010), Comput. Phys. Commun. 181, 259-270; Jansen (1999); SALib: Herman &
     Usher (2017), JOSS 2(9), 97; Iwanaga et al. (2022), Socio-Environmental Systems Modelling 4.
     """
-    from SALib.analyze import sobol as sobol_analyze
-    from SALib.sample import sobol as sobol_sample
+    from rotarykiln.extras import require
+
+    sobol_analyze = require("SALib.analyze.sobol", "a Sobol sensitivity study")
+    sobol_sample = require("SALib.sample.sobol", "a Sobol sensitivity study")
 
     _check_output(output)
     params = as_params(params)
@@ -289,8 +291,10 @@ def morris_indices(
     Morris (1991), Technometrics 33, 161-174; Campolongo, Cariboni & Saltelli (2007), Environ.
     Model. Softw. 22, 1509-1518 (mu*); SALib: Herman & Usher (2017), JOSS 2(9), 97.
     """
-    from SALib.analyze import morris as morris_analyze
-    from SALib.sample import morris as morris_sample
+    from rotarykiln.extras import require
+
+    morris_analyze = require("SALib.analyze.morris", "a Morris sensitivity study")
+    morris_sample = require("SALib.sample.morris", "a Morris sensitivity study")
 
     _check_output(output)
     params = as_params(params)
