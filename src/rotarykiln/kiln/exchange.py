@@ -29,6 +29,7 @@ import numpy as np
 from rotarykiln.errors import InputError
 from rotarykiln.heat.bed_conductivity import (
     maxwell_bed_conductivity,
+    radiative_bed_conductivity,
     zehner_schlunder_bed_conductivity,
 )
 from rotarykiln.heat.contact import (
@@ -255,14 +256,18 @@ class CrossSectionExchange:
         """Bed thermal conductivity (W/(m K)) by the ``bed_conductivity`` closure."""
         c, b = self.closures.bed_conductivity, self.bed
         if c == "given" and b.bed_conductivity is not None:
-            return b.bed_conductivity
-        if c == "maxwell":
-            return maxwell_bed_conductivity(
+            k = b.bed_conductivity
+        elif c == "maxwell":
+            k = maxwell_bed_conductivity(
                 gas.conductivity(t_film), b.solid_conductivity, 1.0 - b.void_fraction
             )
-        return zehner_schlunder_bed_conductivity(
-            gas.conductivity(t_film), b.solid_conductivity, b.void_fraction
-        )
+        else:
+            k = zehner_schlunder_bed_conductivity(
+                gas.conductivity(t_film), b.solid_conductivity, b.void_fraction
+            )
+        if self.closures.bed_radiation:
+            k = k + radiative_bed_conductivity(b.particle_diameter, t_film, b.emissivity)
+        return k
 
     def gas_emissivity(self, gas: FreeboardGas, t_gas, check=False):
         """Gas emissivity (-) by the ``gas_emissivity`` closure, combined with the soot of a
@@ -432,12 +437,44 @@ class CrossSectionExchange:
         q_gw = co["h_gw"] * g.exposed_wall * (tg - tw)
         q_gb = co["h_gb"] * g.chord * (tg - tb)
         q_cw = co["h_cw"] * g.covered_wall * (tw - tb)
-        if self.closures.radiation:
-            q_rw, q_rb = self.radiation(gas, tg, tb, tw, co["eps_gas"])
-            q_rw = radiation_scale * q_rw
-            q_rb = radiation_scale * q_rb
+        c = self.closures
+        if not (c.near_bed_mixing is not None or c.exposed_bed_penetration):
+            if c.radiation:
+                q_rw, q_rb = self.radiation(gas, tg, tb, tw, co["eps_gas"])
+                q_rw = radiation_scale * q_rw
+                q_rb = radiation_scale * q_rb
+            else:
+                q_rw = q_rb = 0.0 * tg
+            flows = dict(zip(FLOW_KEYS, (q_gw, q_gb, q_cw, q_rw, q_rb), strict=True))
+            return flows, co
+        # the paths into the bed surface, scaled by the resistances in series
+        if c.radiation:
+            p_gw, p_gb, p_wb = (
+                radiation_scale * p
+                for p in self.radiation(gas, tg, tb, tw, co["eps_gas"], paths=True)
+            )
         else:
-            q_rw = q_rb = 0.0 * tg
+            p_gw = p_gb = p_wb = 0.0 * tg
+        sigma = 5.670374419e-8
+        if c.near_bed_mixing is not None:
+            # layered freeboard: core -> near-bed gas (h_m) in series with near-bed gas ->
+            # bed (convection + gas radiation, linearised)
+            dt = tg - tb
+            safe = np.where(np.abs(dt) > 1e-3, dt, 1e-3)
+            h_rad = np.where(np.abs(dt) > 1e-3, p_gb / (g.chord * safe), 0.0)
+            h_b = np.maximum(co["h_gb"] + np.maximum(h_rad, 0.0), 1e-9)
+            layer = c.near_bed_mixing / (c.near_bed_mixing + h_b)
+            q_gb = layer * q_gb
+            p_gb = layer * p_gb
+        if c.exposed_bed_penetration:
+            # the exposed surface's heat penetrates the bed over its circulation time
+            kb = self.bed_conductivity_at(gas, tb)
+            rho_c = self.bed.bulk_density * self.bed.phase_cp(tb)
+            h_pen = wachters_kramers_covered_wall_h(kb, rho_c, self.omega, g.full_angle)
+            h_in = co["h_gb"] + 4.0 * sigma * self.bed.emissivity * tb**3
+            share = h_pen / (h_pen + h_in)
+            q_gb, p_gb, p_wb = share * q_gb, share * p_gb, share * p_wb
+        q_rw, q_rb = p_gw - p_wb, p_gb + p_wb
         flows = dict(zip(FLOW_KEYS, (q_gw, q_gb, q_cw, q_rw, q_rb), strict=True))
         return flows, co
 

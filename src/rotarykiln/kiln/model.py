@@ -42,6 +42,14 @@ class Closures:
     bulk value of the solid, falling back to zehner_schlunder); ``convection_factor`` (-, > 0,
     default 1: the correlations as published) multiplies the gas-wall and gas-bed convection
     coefficients, a handle for calibration to plant data, not a default to change;
+    ``near_bed_mixing`` (W/(m2 K), None: off): a layered freeboard, the bed exchanging (by
+    convection and gas radiation) with a near-bed gas layer fed from the core gas through this
+    mixing coefficient in series (the layer's temperature lies between bed and core);
+    ``bed_radiation``: the bed conductivity gains the radiation between particles,
+    :func:`rotarykiln.heat.bed_conductivity.radiative_bed_conductivity` (Damkohler /
+    Zehner-Bauer-Schlunder, growing as d_p T^3); ``exposed_bed_penetration``: the heat
+    reaching the exposed bed surface penetrates the bed through a penetration-theory
+    resistance (Wachters & Kramers over the bed's circulation time) in series;
     ``radiation_model`` in {grey, banded}: the freeboard exchange with one grey gas
     (absorptivity equal to the emissivity at the gas temperature) or with every grey gas of the
     WSGG ``gas_emissivity`` model in the network, the surfaces' radiation weighted at their own
@@ -57,6 +65,9 @@ class Closures:
     bed_conductivity: str = "given"
     convection_factor: float = 1.0
     radiation_model: str = "grey"
+    near_bed_mixing: float | None = None
+    bed_radiation: bool = False
+    exposed_bed_penetration: bool = False
 
     def __post_init__(self):
         for name, value, allowed in (
@@ -78,6 +89,10 @@ class Closures:
         else:
             check_range("closures.gas_emissivity", self.gas_emissivity, 0.0, 1.0, closed_low=True)
         check_range("closures.convection_factor", self.convection_factor, 0.0, 100.0)
+        if self.near_bed_mixing is not None:
+            check_range(
+                "closures.near_bed_mixing", self.near_bed_mixing, 0.0, 1e4, closed_high=True
+            )
 
     @classmethod
     def from_case(cls, section) -> Closures:
