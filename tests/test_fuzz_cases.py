@@ -42,6 +42,8 @@ VALUES = [
     "0 rpm",
     "C2H8:1",
     "N2:nan",
+    "/etc/hostname",  # a case given as data names no file (issue 21)
+    "../species.yaml",
 ]
 RAW = re.compile(r"Input should|None is not|is not an? rtd|given is not|Value error|\[type=")
 

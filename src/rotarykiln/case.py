@@ -32,11 +32,9 @@ from __future__ import annotations
 import difflib
 import math
 import re
-import reprlib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-import yaml
 from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError, model_validator
 from pydantic_core import PydanticCustomError
 
@@ -44,6 +42,18 @@ from rotarykiln.errors import InputError
 from rotarykiln.materials._library import load_library
 from rotarykiln.transverse.config import TransverseSection
 from rotarykiln.units import to_si
+from rotarykiln.yaml_limits import (
+    MAX_NUMBER_CHARS,  # noqa: F401 (importable from here, as before)
+    MAX_YAML_ALIASES,
+    MAX_YAML_BYTES,
+    MAX_YAML_DEPTH,
+    MAX_YAML_VALUES,
+    LimitedLoader,
+    YamlLimitError,
+    check_structure,
+    read_yaml_file,
+    short_repr,
+)
 
 __all__ = [
     "Angle",
@@ -62,8 +72,10 @@ __all__ = [
     "Density",
     "Fraction",
     "HeatTransferCoefficient",
+    "Instant",
     "Kiln",
     "Length",
+    "Mass",
     "MassFlow",
     "Material",
     "Operation",
@@ -81,9 +93,14 @@ __all__ = [
     "TransportWeir",
     "Velocity",
     "VolumetricFlow",
+    "change_fields",
+    "case_file_path",
+    "check_quantity",
     "load_case",
     "parse_case",
     "quantity",
+    "read_case_data",
+    "read_case_yaml",
 ]
 
 
@@ -91,6 +108,18 @@ class Section(BaseModel):
     """Base of every case-file section: unknown keys are rejected, models are frozen."""
 
     model_config = ConfigDict(extra="forbid", frozen=True)
+
+    def model_copy(self, *, update: Any = None, deep: bool = False):
+        """A copy; with ``update``, refused: pydantic would not check the new values (a case
+        changes through :meth:`Case.replace`, which validates them)."""
+        if update:
+            raise InputError(
+                "update",
+                message=f"update: {type(self).__name__}.model_copy(update=...) does not check "
+                "values; change a case with case.replace({'operation.speed': '2.5 rpm'}) "
+                "(dotted fields of the case, validated as a case file)",
+            )
+        return super().model_copy(deep=deep)
 
 
 def _bound_text(gt, ge, lt, le) -> str:
@@ -159,6 +188,10 @@ Temperature = quantity("temperature", ge=150.0, le=1e4, shown="in [150 K, 10000 
 floor the solver evaluates properties at), none hotter than 10000 K."""
 Density = quantity("density", ge=1e-3, le=1e5, shown="in [0.001, 1e5] kg/m3")
 Time = quantity("time", ge=1e-6, le=1e10, shown="in [1 us, 1e10 s]")
+Instant = quantity("time", ge=0, le=1e10, shown="in [0, 1e10 s]")
+"""A moment of a run from its start (a transient event's ``at``): a :data:`Time` or zero."""
+Mass = quantity("mass", gt=0, le=1e6, shown="in (0, 1e6 kg]")
+"""A mass fed at once (a tracer pulse), up to a thousand tonnes."""
 Velocity = quantity("velocity", ge=0, le=1e3, shown="in [0, 1000] m/s")
 Fraction = quantity("fraction", ge=0, le=1)
 Power = quantity("power", ge=-1e10, le=1e10, shown="in [-1e10, 1e10] W")
@@ -717,8 +750,10 @@ class Chemistry(Section):
     ``peclet``: the bed Peclet number of the residence-time effects (default: the ``rtd:``
     section or the Sherritt correlation); ``expected``: the source's printed results (shown
     beside the solution, never used by the solve); ``species``: user species added to the
-    built-in ones (:func:`rotarykiln.chemistry.species.load_species`), a YAML file (relative to
-    the case file) or the same mapping inline (``bed:``, ``gas:``)."""
+    built-in ones (:func:`rotarykiln.chemistry.species.load_species`), a YAML file beside the
+    case file (a relative path inside its folder; read once when the case is loaded, and kept
+    inline) or the same mapping inline (``bed:``, ``gas:``). A case given as data (an app
+    upload, a Python mapping) names no file."""
 
     species: str | dict[str, Any] | None = None
     reactions: Annotated[list, BeforeValidator(_reaction_names)]
@@ -838,6 +873,52 @@ class Case(Section):
         heated = self.wall is not None and (bool(self.wall.heaters) or self.wall.jacket is not None)
         return heated or any(s is not None for s in (self.gas, self.burner, self.chemistry))
 
+    def replace(self, changes: Any = None, /, **sections: Any) -> Case:
+        """A new case with some fields changed, validated as a case file (a case is frozen).
+
+        The case is written back with units (:func:`rotarykiln.case_io.dump_case`), changed
+        (:func:`change_fields`) and parsed again (:func:`parse_case`): a bad value raises the
+        one-line :class:`~rotarykiln.errors.InputError` of a case file, naming the field.
+
+        Parameters
+        ----------
+        changes : mapping, optional
+            Dotted field -> value: ``{"operation.speed": "2.5 rpm", "bed.fill": 0.1,
+            "wall.lining[0].thickness": "80 mm"}``; values as a case file gives them (text with
+            units, numbers, mappings, a section of a case); None removes the field (its default
+            applies).
+        **sections
+            Whole sections: ``replace(transport={"model": "kramers"}, bed=None)``; applied
+            before ``changes``.
+
+        Returns
+        -------
+        Case
+
+        Examples
+        --------
+        >>> from rotarykiln.cases import builtin_case_path
+        >>> case = load_case(builtin_case_path("barr_T4"))
+        >>> faster = case.replace({"operation.speed": "3 rpm"})
+        >>> round(faster.operation.speed, 4), round(case.operation.speed, 4)
+        (0.3142, 0.1571)
+        >>> case.replace({"operation.speed": "3 m"})  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        rotarykiln.errors.InputError: operation.speed: "3 m" is ...
+        """
+        from rotarykiln.case_io import dump_case
+
+        data = change_fields(dump_case(self), {**sections, **dict(changes or {})}, type(self))
+        return parse_case(data, source="case", model=type(self))
+
+    def model_copy(self, *, update: Any = None, deep: bool = False) -> Case:
+        """A copy; with ``update`` (dotted fields or sections -> values), :meth:`replace`,
+        which validates the new values."""
+        if update:
+            return self.replace(update)
+        return super().model_copy(deep=deep)
+
 
 def _model_at(model: type[BaseModel], loc: tuple) -> type[BaseModel] | None:
     """The pydantic model class that owns the field at ``loc`` (without its last element)."""
@@ -863,6 +944,104 @@ def _unwrap(annotation: Any) -> Any:
         if isinstance(inner, type) and issubclass(inner, BaseModel):
             return inner
     return annotation
+
+
+_DOTTED = re.compile(r"^[^.\[\]\s]+(?:\.[^.\[\]\s]+|\[\d+\])*$")
+
+
+def change_fields(data: Any, changes: Any, model: type[BaseModel] | None = None) -> Any:
+    """A case mapping (as read from YAML) with ``changes`` made: dotted field -> value.
+
+    The fields are checked against the case model (``model``, default :class:`Case`): a name
+    that is no field raises :class:`InputError` naming the dotted field and the accepted ones.
+    Missing sections are created; None removes a field; a section model given as a value is
+    written back with units. ``data`` itself is not changed; the values are checked later, by
+    :func:`parse_case`.
+
+    Examples
+    --------
+    >>> change_fields({"operation": {"speed": "1 rpm"}}, {"operation.speed": "2.5 rpm"})
+    {'operation': {'speed': '2.5 rpm'}}
+    >>> change_fields({}, {"operation.sped": "2 rpm"})  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: operation.sped: not a field of the case, did you mean "speed"? ...
+    """
+    if not changes or not isinstance(data, dict):  # not a mapping: parse_case says so
+        return data
+    import copy
+
+    data = copy.deepcopy(data)
+    for path, value in dict(changes).items():
+        _change_field(data, path, value, model or Case)
+    return data
+
+
+def _change_field(data: dict, path: Any, value: Any, model: type[BaseModel]) -> None:
+    """Set (or, for None, remove) the dotted field ``path`` of ``data`` (see change_fields)."""
+    if not isinstance(path, str) or not _DOTTED.match(path):
+        raise InputError(
+            str(path),
+            message=f"{_show(path)}: not a dotted field of the case "
+            '(e.g. "operation.speed", "wall.lining[0].thickness")',
+        )
+    if isinstance(value, BaseModel):
+        from rotarykiln.case_io import dump_case
+
+        value = dump_case(value)
+    parts = [
+        int(index or name) if (index or name).isdigit() else name
+        for index, name in re.findall(r"\[(\d+)\]|([^.\[\]]+)", path)
+    ]
+    node: Any = data
+    owner: Any = model  # the section model that owns the next part (None: a free mapping)
+    shown = ""
+    for k, part in enumerate(parts):
+        parent, shown = shown, f"{shown}.{part}" if shown else str(part)
+        if isinstance(part, int):
+            if not isinstance(node, list):
+                raise InputError(shown, message=f"{shown}: {parent} is not a list")
+            if not 0 <= part < len(node):
+                raise InputError(shown, message=f"{shown}: no such item ({parent} has {len(node)})")
+        elif not isinstance(node, dict):
+            raise InputError(shown, message=f"{shown}: {parent} is a list (give an index)")
+        elif isinstance(owner, type) and issubclass(owner, BaseModel):
+            names = list(owner.model_fields)
+            if part not in names:
+                close = difflib.get_close_matches(part, names, n=1)
+                if not close and k == 0:  # a field of a section given alone: "speed"
+                    close = [
+                        f"{name}.{part}"
+                        for name, info in owner.model_fields.items()
+                        if part in getattr(_unwrap(info.annotation), "model_fields", {})
+                    ][:1]
+                hint = f', did you mean "{close[0]}"?' if close else ""
+                raise InputError(
+                    shown,
+                    message=f"{shown}: not a field of the case{hint} (accepted: {', '.join(names)})",
+                )
+            annotation = owner.model_fields[part].annotation
+            owner = None if getattr(annotation, "__origin__", None) is dict else _unwrap(annotation)
+        else:
+            owner = None
+        if k == len(parts) - 1:
+            if value is not None:
+                node[part] = value
+            elif isinstance(node, list):
+                del node[part]
+            else:
+                node.pop(part, None)
+            return
+        child = node[part] if isinstance(node, list) else node.get(part)
+        if child is None:
+            if isinstance(parts[k + 1], int):
+                raise InputError(shown, message=f"{shown}: not given (no list to index)")
+            child = node[part] = {}
+        elif not isinstance(child, dict | list):
+            raise InputError(
+                shown, message=f"{shown}: {_show(child)} is a value, not a section of fields"
+            )
+        node = child
 
 
 # What a built-in pydantic check accepts, in the words of "<field>: <value> is not <accepted>".
@@ -970,44 +1149,13 @@ def _format_error(model: type[BaseModel], err: dict, siblings: list[dict] = ()) 
     return f"{path}: {msg}"
 
 
-_REPR = reprlib.Repr()
-_REPR.maxlevel, _REPR.maxdict, _REPR.maxlist, _REPR.maxtuple = 3, 4, 6, 6
-_REPR.maxstring = _REPR.maxother = _REPR.maxlong = 50
-
-
-def _short(value: Any, limit: int = 80) -> str:
-    """``repr(value)`` in at most about ``limit`` characters, however large the value."""
-    try:
-        text = _REPR.repr(value)
-    except (ValueError, RecursionError):  # an int over Python's digit limit
-        return f"a {type(value).__name__} too long to show"
-    return text if len(text) <= limit else text[: limit - 3] + "..."
+_short = short_repr  # ``repr(value)`` in at most about 80 characters, however large the value
 
 
 def _check_structure(data: Any, source: str) -> None:
-    """Refuse data (from YAML or Python) nested deeper than :data:`MAX_CASE_DEPTH` (cycles
-    included), with more than :data:`MAX_CASE_VALUES` values, or integers of more than
-    :data:`MAX_NUMBER_CHARS` digits: without recursion, in at most that many steps."""
-    stack = [(data, 1, "")]
-    count = 0
-    while stack:
-        node, depth, path = stack.pop()
-        count += 1
-        if count > MAX_CASE_VALUES:
-            raise InputError(source, message=f"{source}: more than {MAX_CASE_VALUES} values")
-        if isinstance(node, dict | list | tuple):
-            if depth > MAX_CASE_DEPTH:
-                raise InputError(
-                    path, message=f"{path}: nested deeper than {MAX_CASE_DEPTH} levels"
-                )
-            items = node.items() if isinstance(node, dict) else enumerate(node)
-            for key, value in items:
-                stack.append((value, depth + 1, f"{path}.{key}" if path else str(key)))
-        elif isinstance(node, int) and node.bit_length() > 3.33 * MAX_NUMBER_CHARS:
-            raise InputError(
-                path,
-                message=f"{path}: an integer of more than {MAX_NUMBER_CHARS} digits",
-            )
+    """Refuse data nested too deeply, too large or with huge integers
+    (:func:`rotarykiln.yaml_limits.check_structure`)."""
+    check_structure(data, source)
 
 
 def _error_rank(err: dict) -> int:
@@ -1020,10 +1168,90 @@ def _error_rank(err: dict) -> int:
     return 2 if err["type"] in _ACCEPTED else 1
 
 
-def _load_user_species(data: dict, source: str):
-    """The case's user species (``chemistry.species``: a file, relative to the case file, or a
-    mapping), loaded once: the data with the file's absolute path, and the species table (None
-    without user species). A bad species: :class:`InputError` naming ``chemistry.species``."""
+SPECIES_ACCEPTED = "a species file beside the case file, or a mapping of species (bed:, gas:)"
+"""What ``chemistry.species`` accepts, in its messages."""
+
+
+def case_file_path(field: str, spec: Any, base_dir: str | Path | None, accepted: str) -> Path:
+    """The file a case names at ``field``: ``spec`` resolved inside the case file's folder.
+
+    A case may only name a file beside it: a relative path that stays inside ``base_dir`` once
+    resolved (no absolute path, no ``..``, no symbolic link leading out), naming a regular file.
+    A case given as data (``base_dir`` None: a Python mapping, an app upload) names no file.
+
+    Parameters
+    ----------
+    field : str
+        The field of the case (``"chemistry.species"``), named in messages.
+    spec : str
+        The path as the user typed it.
+    base_dir : str, Path or None
+        The case file's folder; None: no file is accepted.
+    accepted : str
+        What the field accepts, for the messages.
+
+    Returns
+    -------
+    Path
+        The resolved path of the file.
+
+    Raises
+    ------
+    InputError
+        One line naming the field and the path as typed (never the file's content).
+    """
+    refused = InputError(field, message=f"{field}: {_show(spec)} is not accepted ({accepted})")
+    if base_dir is None:
+        raise InputError(
+            field,
+            message=f"{field}: {_show(spec)} is not accepted ({accepted}; a case given as data "
+            "names no file)",
+        )
+    if not isinstance(spec, str) or not spec.strip() or "\0" in spec or len(spec) > 255:
+        raise refused
+    typed = Path(spec)
+    if typed.is_absolute() or ".." in typed.parts:
+        raise refused
+    try:
+        base = Path(base_dir).resolve()
+        target = (base / typed).resolve()
+    except (OSError, RuntimeError, ValueError):  # a loop of symbolic links
+        raise refused from None
+    if not target.is_relative_to(base) or target == base:
+        raise refused
+    if not target.is_file():
+        raise InputError(
+            field,
+            message=f"{field}: {_show(spec)} is not a file beside the case file ({accepted})",
+        )
+    return target
+
+
+def _species_file(spec: str, base_dir) -> dict:
+    """The mapping of the species file ``spec`` (beside the case); messages show no content."""
+    field = "chemistry.species"
+    path = case_file_path(field, spec, base_dir, SPECIES_ACCEPTED)
+    raw = read_yaml_file(path, what="species file", label=f"{field}: {_show(spec)}", content=False)
+    if isinstance(raw, dict) and "species" in raw and not ({"bed", "gas"} & set(raw)):
+        raw = raw["species"]  # a file may hold its species under a top-level species: key
+    if (
+        not isinstance(raw, dict)
+        or not raw
+        or not all(isinstance(k, str) and k in ("bed", "gas", "elements") for k in raw)
+    ):
+        raise InputError(
+            field,
+            message=f"{field}: {_show(spec)} is not a species file (a YAML mapping with bed:, "
+            "gas: and elements: sections)",
+        )
+    return raw
+
+
+def _load_user_species(data: dict, source: str, base_dir: str | Path | None = None):
+    """The case's user species (``chemistry.species``: a file beside the case file, or a
+    mapping), loaded once: the data with the species inline (a file's mapping in place of its
+    name), and the species table (None without user species). A bad species:
+    :class:`InputError` naming ``chemistry.species``; the values of a file are never shown."""
     chem = data.get("chemistry")
     if not isinstance(chem, dict) or chem.get("species") is None:
         return data, None
@@ -1031,23 +1259,53 @@ def _load_user_species(data: dict, source: str):
 
     spec = chem["species"]
     if isinstance(spec, str):
-        path = Path(spec)
-        if not path.is_absolute() and Path(source).is_file():
-            path = Path(source).resolve().parent / path
-        if not path.is_file():
-            raise InputError("chemistry.species", spec, "a YAML file of species (bed:, gas:)")
-        spec = str(path)
-    elif not isinstance(spec, dict):
-        raise InputError("chemistry.species", spec, "a YAML file or a mapping of species")
+        mapping = _species_file(spec, base_dir)
+        try:
+            species = load_species(mapping)
+        except InputError as exc:
+            where = f"chemistry.species: {_show(spec)}: {str(exc.field)[:80]}"
+            if exc.value is None or exc.value == "missing" or not exc.accepted:
+                shown = str(exc).split(": ", 1)[-1] if exc.value is None else "not accepted"
+                raise InputError("chemistry.species", message=f"{where}: {shown}") from None
+            raise InputError(
+                "chemistry.species",
+                message=f"{where}: the value given is not {exc.accepted}",
+            ) from None
+        return {**data, "chemistry": {**chem, "species": mapping}}, species
+    if not isinstance(spec, dict):
+        raise InputError(
+            "chemistry.species",
+            message=f"chemistry.species: {_short(spec)} is not accepted ({SPECIES_ACCEPTED})",
+        )
     try:
         species = load_species(spec)
     except InputError as exc:
         raise InputError("chemistry.species", message=f"chemistry.{exc}") from None
-    return {**data, "chemistry": {**chem, "species": spec}}, species
+    return data, species
 
 
-def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case) -> Case:
+def parse_case(
+    data: Any,
+    *,
+    source: str = "case",
+    model: type[BaseModel] = Case,
+    base_dir: str | Path | None = None,
+) -> Case:
     """Validate a mapping (parsed YAML) into a :class:`Case`.
+
+    Parameters
+    ----------
+    data : mapping
+        The case file's content (parsed YAML, or a Python mapping).
+    source : str
+        How messages name the case (a file name).
+    model : type
+        The pydantic model to validate against (default :class:`Case`).
+    base_dir : str, Path or None
+        The folder of the case file, in which the files a case names (``chemistry.species``)
+        are looked up (:func:`case_file_path`: only files inside it). None (default): a case
+        given as data, which names no file: only inline mappings and built-in names are
+        accepted (the app's uploads, sweeps, Python callers).
 
     Raises
     ------
@@ -1063,7 +1321,7 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
             source, message=f"{source}: expected a mapping of sections, got {_short(data)}"
         )
     _check_structure(data, source)
-    data, species = _load_user_species(data, source)
+    data, species = _load_user_species(data, source, base_dir)
     try:
         return model.model_validate(data, context={"species": species})
     except ValidationError as exc:
@@ -1079,149 +1337,97 @@ def parse_case(data: Any, *, source: str = "case", model: type[BaseModel] = Case
         raise InputError(path, message=message) from None
 
 
-MAX_CASE_BYTES = 1_000_000
-"""Largest case file read, bytes (a case is a few kB; the largest built-in one is 3.5 kB)."""
-MAX_CASE_DEPTH = 20
-"""Deepest nesting of mappings and lists in a case (the built-in cases nest 6 levels)."""
-MAX_CASE_ALIASES = 100
-"""Most YAML aliases (``*name``) in a case file."""
-MAX_CASE_VALUES = 100_000
-"""Most values (keys, scalars, lists and mappings, aliases expanded) in a case (built-in: < 200)."""
-MAX_NUMBER_CHARS = 100
-"""Longest number written in a case file, characters."""
+def check_quantity(field: str, value: Any, kind: Any) -> float:
+    """``value`` converted to SI and checked against a quantity type of the case file.
 
+    The same units and ranges as a case file's field of that type, for inputs that are not
+    case files (transient events files): ``check_quantity("events[0].to", "1e6 rpm",
+    RotationRate)`` is refused as ``operation.speed: "1e6 rpm"`` is.
 
-class _LimitError(yaml.YAMLError):
-    """A case file over one of the limits above (raised while reading it)."""
+    Parameters
+    ----------
+    field : str
+        The field's name in messages (``"events[0].to"``).
+    value : str or number
+        The value as given (``"1.5 rpm"``).
+    kind : type
+        A quantity type of this module (:data:`RotationRate`, :data:`Temperature`...).
 
-    def __init__(self, message: str, mark=None):
-        where = f" (line {mark.line + 1})" if mark is not None else ""
-        super().__init__(message + where)
+    Returns
+    -------
+    float
+        The SI value.
 
+    Raises
+    ------
+    InputError
+        One line: ``<field>: <value> is not <range>`` or the unit's message.
 
-class _CaseLoader(yaml.SafeLoader):
-    """A YAML safe loader that refuses nesting deeper than :data:`MAX_CASE_DEPTH`, more than
-    :data:`MAX_CASE_ALIASES` aliases or :data:`MAX_CASE_VALUES` values once aliases are
-    expanded ("billion laughs"), recursive aliases, and numbers longer than
-    :data:`MAX_NUMBER_CHARS` characters, before they reach a recursion limit, memory or ``int()``.
+    Examples
+    --------
+    >>> check_quantity("events[0].to", "1e6 rpm", RotationRate)
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: events[0].to: 1e6 rpm is not in [1e-5 rpm, 955 rpm] (1e-6 to 100 rad/s)
     """
-
-    def __init__(self, stream):
-        super().__init__(stream)
-        self._depth = 0
-        self._aliases = 0
-        self._values = 0
-        self._sizes: dict[int, int] = {}  # id(node) -> values in it, aliases expanded
-
-    def compose_node(self, parent, index):
-        if self.check_event(yaml.AliasEvent):
-            event = self.peek_event()
-            node = self.anchors.get(event.anchor)
-            if node is not None:
-                size = self._sizes.get(id(node))
-                if size is None:
-                    raise _LimitError(f"alias *{event.anchor} refers to itself", event.start_mark)
-                self._aliases += 1
-                self._values += size
-                if self._aliases > MAX_CASE_ALIASES:
-                    raise _LimitError(
-                        f"more than {MAX_CASE_ALIASES} YAML aliases", event.start_mark
-                    )
-                self._check_values(event.start_mark)
-            return super().compose_node(parent, index)
-        self._depth += 1
-        if self._depth > MAX_CASE_DEPTH:
-            raise _LimitError(
-                f"nested deeper than {MAX_CASE_DEPTH} levels", self.peek_event().start_mark
-            )
-        start = self._values
-        node = super().compose_node(parent, index)
-        self._depth -= 1
-        self._values += 1
-        self._check_values(node.start_mark)
-        self._sizes[id(node)] = self._values - start
-        return node
-
-    def _check_values(self, mark) -> None:
-        if self._values > MAX_CASE_VALUES:
-            raise _LimitError(
-                f"more than {MAX_CASE_VALUES} values once YAML aliases are expanded", mark
-            )
-
-    def _short_number(self, node) -> None:
-        if len(node.value) > MAX_NUMBER_CHARS:
-            raise _LimitError(
-                f"a number of {len(node.value)} characters (at most {MAX_NUMBER_CHARS})",
-                node.start_mark,
-            )
-
-    def construct_yaml_int(self, node):
-        self._short_number(node)
-        return super().construct_yaml_int(node)
-
-    def construct_yaml_float(self, node):
-        self._short_number(node)
-        return super().construct_yaml_float(node)
+    convert = next(m.func for m in kind.__metadata__ if isinstance(m, BeforeValidator))
+    try:
+        return convert(value)
+    except PydanticCustomError as exc:
+        raise InputError(field, message=f"{field}: {exc.message()}") from None
 
 
-_CaseLoader.add_constructor("tag:yaml.org,2002:int", _CaseLoader.construct_yaml_int)
-_CaseLoader.add_constructor("tag:yaml.org,2002:float", _CaseLoader.construct_yaml_float)
+MAX_CASE_BYTES = MAX_YAML_BYTES
+"""Largest case file read, bytes (:data:`rotarykiln.yaml_limits.MAX_YAML_BYTES`)."""
+MAX_CASE_DEPTH = MAX_YAML_DEPTH
+"""Deepest nesting of mappings and lists in a case (:data:`~rotarykiln.yaml_limits.MAX_YAML_DEPTH`)."""
+MAX_CASE_ALIASES = MAX_YAML_ALIASES
+"""Most YAML aliases (``*name``) in a case file."""
+MAX_CASE_VALUES = MAX_YAML_VALUES
+"""Most values (keys, scalars, lists and mappings, aliases expanded) in a case."""
+_LimitError = YamlLimitError  # the names of the limited loader before rotarykiln.yaml_limits
+_CaseLoader = LimitedLoader
 
 
 def read_case_yaml(path: str | Path) -> Any:
-    """Read a YAML case file into Python objects, within the limits above (not validated).
+    """Read a YAML case file into Python objects, within the limits of
+    :mod:`rotarykiln.yaml_limits` (not validated; the files it names are not read).
 
     Raises
     ------
     InputError
         One line naming the file: missing, unreadable, larger than :data:`MAX_CASE_BYTES`, not
-        UTF-8, malformed YAML, or over a limit of :class:`_CaseLoader`.
+        UTF-8, malformed YAML, over a limit of the loader, a duplicate key.
     """
-    path = Path(path)
-    try:
-        size = path.stat().st_size
-        if size > MAX_CASE_BYTES:
-            raw = b""
-        else:
-            with path.open("rb") as fh:  # at most the limit + 1 byte: /dev/zero, a growing file
-                raw = fh.read(MAX_CASE_BYTES + 1)
-    except FileNotFoundError:
-        raise InputError(str(path), message=f"{path}: no such case file") from None
-    except OSError as exc:
-        raise InputError(str(path), message=f"{path}: cannot read ({exc.strerror})") from None
-    if size > MAX_CASE_BYTES or len(raw) > MAX_CASE_BYTES:
-        shown = f"{size / 1e6:.3g} MB" if size > MAX_CASE_BYTES else "more than that"
-        raise InputError(
-            str(path),
-            message=f"{path}: {shown} is too large for a case file (at most "
-            f"{MAX_CASE_BYTES / 1e6:g} MB; a case is a few kB)",
-        )
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        line = raw[: exc.start].count(b"\n") + 1
-        raise InputError(
-            str(path),
-            message=f"{path}: not UTF-8 text (byte 0x{raw[exc.start]:02x} at line {line}); "
-            "save the case file as UTF-8",
-        ) from None
-    try:
-        return yaml.load(text, Loader=_CaseLoader)  # noqa: S506 (a SafeLoader)
-    except _LimitError as exc:
-        raise InputError(str(path), message=f"{path}: {exc}") from None
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
-        raise InputError(str(path), message=f"{path}: malformed YAML{where}: {problem}") from None
-    except RecursionError:  # a guard; the depth limit refuses such files first
-        raise InputError(
-            str(path), message=f"{path}: nested too deeply (at most {MAX_CASE_DEPTH} levels)"
-        ) from None
+    return read_yaml_file(path, what="case file")
+
+
+def _case_folder(path: str | Path) -> Path:
+    """The folder of a case file (as given: a case reached through a link names files beside
+    the link)."""
+    return Path(path).absolute().parent
+
+
+def read_case_data(path: str | Path) -> Any:
+    """A case file's mapping with the files it names read in (``chemistry.species``: the
+    species file beside it, as a mapping): data that :func:`parse_case` validates without a
+    folder (sweeps, studies, worker processes), refused as :func:`load_case` refuses it.
+
+    Raises
+    ------
+    InputError
+        One line: as :func:`read_case_yaml`, or a file the case names that is refused.
+    """
+    data = read_case_yaml(path)
+    if isinstance(data, dict):
+        _check_structure(data, str(path))
+        data, _ = _load_user_species(data, str(path), _case_folder(path))
+    return data
 
 
 def load_case(path: str | Path) -> Case:
-    """Read and validate a YAML case file (within the limits of :func:`read_case_yaml`).
+    """Read and validate a YAML case file (within the limits of :func:`read_case_yaml`); the
+    files it names are looked up beside it (see :func:`parse_case`).
 
     Examples
     --------
@@ -1230,4 +1436,4 @@ def load_case(path: str | Path) -> Case:
     >>> round(case.operation.speed, 4)
     0.1571
     """
-    return parse_case(read_case_yaml(path), source=str(path))
+    return parse_case(read_case_yaml(path), source=str(path), base_dir=_case_folder(path))

@@ -53,6 +53,8 @@ class InputError(ValueError):
             message = (
                 f"{field}: {_fmt(value)} is not {accepted}" if accepted else f"{field}: {value}"
             )
+        # one line whatever the value held: a newline typed in a value is shown, not obeyed
+        message = message.replace("\r", "\\r").replace("\n", "\\n")
         super().__init__(message)
 
 

@@ -231,12 +231,12 @@ def typed_case_yaml(case, source: str | None = None) -> tuple[str, bool]:
     path, typed = _case_file(source), False
     if path is not None:
         try:
-            from rotarykiln.case import load_case
+            from rotarykiln.case import load_case, read_case_yaml
 
             with _warnings.catch_warnings():
                 _warnings.simplefilter("ignore")
                 same = case_hash(load_case(path)) == case_hash(case)
-            raw = yaml.safe_load(path.read_text(encoding="utf-8")) if same else None
+            raw = read_case_yaml(path) if same else None
         except Exception:  # noqa: BLE001 - an unreadable file: the written-back case is shown
             raw = None
         if isinstance(raw, dict):

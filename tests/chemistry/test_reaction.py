@@ -94,9 +94,9 @@ def test_bad_yaml_file(tmp_path):
     with pytest.raises(InputError, match="reactions' list"):
         load_reactions(p)
     p.write_text("reactions:\n  - name: [\n")
-    with pytest.raises(InputError, match="invalid YAML"):
+    with pytest.raises(InputError, match="malformed YAML"):
         load_reactions(p)
-    with pytest.raises(InputError, match="unreadable"):
+    with pytest.raises(InputError, match="no such reaction file"):
         load_reactions(tmp_path / "missing.yaml")
     item = (
         "  - {name: a, stoichiometry: {H2O(l): -1, H2O: 1}, basis: H2O(l),"

@@ -228,7 +228,7 @@ def mechanism_from_files(
     file_reactions = []
     for path in files:
         path = Path(path)
-        data = read_yaml(path)
+        data = read_yaml(path, "reaction file")
         if isinstance(data, dict) and data.get("species") is not None:
             sp = load_species(data["species"], base=sp)
         file_reactions.append(path)

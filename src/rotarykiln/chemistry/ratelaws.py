@@ -23,6 +23,7 @@ arrhenius                  A (T/T_ref)^b exp(-E/RT) m'_basis prod p^n   (none)
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
@@ -147,7 +148,13 @@ class RateLaw:
             elif isinstance(d, dict):
                 if not isinstance(v, Mapping):
                     raise InputError(f"{where}.{k}", v, "a mapping species -> order")
-                params[k] = {str(a): float(b) for a, b in v.items()}
+                orders = {}
+                for a, b in v.items():
+                    ok = isinstance(b, int | float) and not isinstance(b, bool)
+                    if not ok or not math.isfinite(b):
+                        raise InputError(f"{where}.{k}.{a}", b, "a finite number (an order)")
+                    orders[str(a)] = float(b)
+                params[k] = orders
             else:
                 if v is None and d is None:
                     continue

@@ -243,7 +243,7 @@ def reaction_from_dict(
             raise InputError(f"{f}.stoichiometry.{s_name}", nu, "a finite non-zero coefficient")
         stoich[s_name] = v
     basis = data["basis"]
-    if basis not in stoich or stoich[basis] >= 0:
+    if not isinstance(basis, str) or basis not in stoich or stoich[basis] >= 0:
         raise InputError(
             f"{f}.basis", basis, "a reactant of the stoichiometry (negative coefficient)"
         )
@@ -277,7 +277,7 @@ def reaction_from_dict(
     if not isinstance(rate, Mapping) or "law" not in rate:
         raise InputError(f"{f}.rate", rate, "a mapping with a 'law' key")
     law_name = rate["law"]
-    if law_name not in RATE_LAWS:
+    if not isinstance(law_name, str) or law_name not in RATE_LAWS:
         raise InputError(
             f"{f}.rate.law", law_name, f"a known rate law ({', '.join(sorted(RATE_LAWS))})"
         )
@@ -316,7 +316,7 @@ def load_reactions(path, species: SpeciesTable | None = None) -> dict[str, React
     species : SpeciesTable, optional
     """
     path = Path(path)
-    data = read_yaml(path)
+    data = read_yaml(path, "reaction file")
     if not isinstance(data, Mapping) or not isinstance(data.get("reactions"), list):
         raise InputError(str(path), "content", "a mapping with a 'reactions' list")
     out: dict[str, Reaction] = {}

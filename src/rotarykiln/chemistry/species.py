@@ -17,10 +17,10 @@ from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from rotarykiln.chemistry.yaml_files import read_yaml
 from rotarykiln.errors import InputError
+from rotarykiln.yaml_limits import short_repr
 
 __all__ = [
     "Species",
@@ -34,6 +34,12 @@ SPECIES_FILE = Path(__file__).with_name("species.yaml")
 
 #: Tolerance on the sum of mass fractions (absolute).
 FRACTION_SUM_TOL = 1e-6
+#: Molar masses of a species, kg/mol: from 0.1 g/mol (below hydrogen) to 1e6 g/mol (a lumped
+#: polymer); outside, a typing error (1e308 atoms) rather than a species.
+MOLAR_MASS_RANGE = (1e-4, 1e3)
+_MM_TEXT = "a molar mass in [0.1, 1e6] g/mol"
+#: Most atoms of one element per formula unit.
+MAX_ATOMS = 1e6
 
 
 @dataclass(frozen=True)
@@ -159,10 +165,15 @@ def _molar_mass(name: str, elements: Mapping[str, float], masses: Mapping[str, f
             raise InputError(
                 f"species.{name}.elements", e, f"a known element ({', '.join(masses)})"
             )
-        if not np.isfinite(n) or n <= 0:
-            raise InputError(f"species.{name}.elements.{e}", n, "> 0")
+        if not np.isfinite(n) or not 0 < n <= MAX_ATOMS:
+            raise InputError(f"species.{name}.elements.{e}", n, f"in (0, {MAX_ATOMS:g}]")
         total += n * masses[e]
-    return total * 1e-3
+    mm = total * 1e-3
+    if not MOLAR_MASS_RANGE[0] <= mm <= MOLAR_MASS_RANGE[1]:
+        raise InputError(
+            f"species.{name}.elements", f"a molar mass of {mm * 1e3:.6g} g/mol", _MM_TEXT
+        )
+    return mm
 
 
 def _molar_mass_si(field_name: str, value) -> float:
@@ -177,8 +188,8 @@ def _molar_mass_si(field_name: str, value) -> float:
         value = float(q)
     if isinstance(value, bool) or not isinstance(value, int | float) or not np.isfinite(value):
         raise InputError(field_name, value, 'a molar mass > 0 (kg/mol or "24 g/mol")')
-    if value <= 0:
-        raise InputError(field_name, value, "> 0 kg/mol")
+    if not MOLAR_MASS_RANGE[0] <= value <= MOLAR_MASS_RANGE[1]:
+        raise InputError(field_name, value, _MM_TEXT)
     return float(value)
 
 
@@ -197,8 +208,8 @@ def _species_from_spec(
 
     f = f"species.{name}"
     if not isinstance(spec, Mapping):
-        raise InputError(f, spec, "a mapping with elements (or composition), cp, h_f")
-    extra = sorted(set(spec) - _SPECIES_KEYS)
+        raise InputError(f, short_repr(spec), "a mapping with elements (or composition), cp, h_f")
+    extra = sorted(map(str, set(spec) - _SPECIES_KEYS))
     if extra and strict:
         raise InputError(f"{f}.{extra[0]}", "given", "one of " + ", ".join(sorted(_SPECIES_KEYS)))
     has_el, has_comp = spec.get("elements") is not None, spec.get("composition") is not None
@@ -297,12 +308,17 @@ def species_table_from_dict(
     refuses unknown keys (user species).
     """
     if not isinstance(data, Mapping):
-        raise InputError("species", data, "a mapping with bed, gas (and elements) sections")
-    extra = sorted(set(data) - {"bed", "gas", "elements"})
+        raise InputError(
+            "species", short_repr(data), "a mapping with bed, gas (and elements) sections"
+        )
+    extra = sorted(map(str, set(data) - {"bed", "gas", "elements"}))
     if extra:
         raise InputError(f"species.{extra[0]}", "given", "one of bed, gas, elements")
     masses = {} if base is None else {e: m * 1e3 for e, m in base.element_masses.items()}
-    for e, m in (data.get("elements") or {}).items():
+    elements = data.get("elements") or {}
+    if not isinstance(elements, Mapping):
+        raise InputError("species.elements", short_repr(elements), "a mapping element -> g/mol")
+    for e, m in elements.items():
         if isinstance(m, bool) or not isinstance(m, int | float) or not np.isfinite(m) or m <= 0:
             raise InputError(f"species.elements.{e}", m, "an atomic mass > 0 g/mol")
         if e in masses and abs(masses[e] - float(m)) > 1e-9 * masses[e]:
@@ -312,10 +328,10 @@ def species_table_from_dict(
     for phase in ("bed", "gas"):
         section = data.get(phase) or {}
         if not isinstance(section, Mapping):
-            raise InputError(f"species.{phase}", section, "a mapping name -> species")
+            raise InputError(f"species.{phase}", short_repr(section), "a mapping name -> species")
         for name, spec in section.items():
             if not isinstance(name, str) or not name:
-                raise InputError(f"species.{phase}", name, "a non-empty species name")
+                raise InputError(f"species.{phase}", short_repr(name), "a non-empty species name")
             if name in [s.name for s in species]:
                 raise InputError(f"species.{name}", name, "a unique (new) species name")
             species.append(_species_from_spec(name, phase, spec, masses, strict))
@@ -365,9 +381,16 @@ def load_species(source, base: SpeciesTable | None = None) -> SpeciesTable:
     if isinstance(source, Mapping):
         data = source
     else:
-        data = read_yaml(source)
+        data = read_yaml(source, "species file")
     if isinstance(data, Mapping) and "species" in data and not ({"bed", "gas"} & set(data)):
         data = data["species"]
+    if not isinstance(source, Mapping) and not isinstance(data, Mapping):
+        # a file that is not a species file: say so without showing its content
+        raise InputError(
+            str(source),
+            message=f"{source}: not a species file (a YAML mapping with bed:, gas: and "
+            "elements: sections)",
+        )
     return species_table_from_dict(data, default_species() if base is None else base, strict=True)
 
 
@@ -383,8 +406,7 @@ def default_species() -> SpeciesTable:
     >>> sp.bed_names[:3]
     ('H2O(l)', 'CaCO3', 'CaO')
     """
-    with open(SPECIES_FILE, encoding="utf-8") as fh:
-        return species_table_from_dict(yaml.safe_load(fh))
+    return species_table_from_dict(read_yaml(SPECIES_FILE, "species file"))
 
 
 def check_mass_fractions(

@@ -1,39 +1,42 @@
-"""Reading the chemistry's YAML files (species, reactions) with one-line errors."""
+"""Reading the chemistry's YAML files (species, reactions) with one-line errors.
+
+Species and reaction files are read as every YAML file of the program is
+(:func:`rotarykiln.yaml_limits.read_yaml_file`): size, nesting, aliases, number lengths and
+duplicate keys are limited, and every refusal is one line naming the file.
+"""
 
 from __future__ import annotations
 
 from pathlib import Path
 from typing import Any
 
-import yaml
-
-from rotarykiln.errors import InputError
+from rotarykiln.yaml_limits import read_yaml_file
 
 __all__ = ["read_yaml"]
 
 
-def read_yaml(path: str | Path) -> Any:
-    """The parsed content of the YAML file ``path``.
+def read_yaml(path: str | Path, what: str = "YAML file") -> Any:
+    """The parsed content of the YAML file ``path``, within the limits of
+    :mod:`rotarykiln.yaml_limits`.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file.
+    what : str
+        What the file is, in messages (``"species file"``, ``"reaction file"``).
 
     Raises
     ------
     InputError
-        One line naming the file: unreadable (with the system's reason) or not valid YAML.
+        One line naming the file: missing, unreadable, too large, not UTF-8, malformed YAML,
+        over a limit (nesting, aliases, values), a duplicate key.
 
     Examples
     --------
-    >>> read_yaml("no/such/file.yaml")
+    >>> read_yaml("no/such/file.yaml", "reaction file")
     Traceback (most recent call last):
     ...
-    rotarykiln.errors.InputError: no/such/file.yaml: unreadable is not a readable YAML file (No such file or directory)
+    rotarykiln.errors.InputError: no/such/file.yaml: no such reaction file
     """
-    path = Path(path)
-    try:
-        with open(path, encoding="utf-8") as fh:
-            return yaml.safe_load(fh)
-    except OSError as exc:
-        raise InputError(
-            str(path), "unreadable", f"a readable YAML file ({exc.strerror})"
-        ) from None
-    except yaml.YAMLError as exc:
-        raise InputError(str(path), "invalid YAML", f"valid YAML ({exc})") from None
+    return read_yaml_file(path, what=what)

@@ -9,8 +9,6 @@ map and the outlets against time; with a tracer pulse, its RTD in the summary.
 from __future__ import annotations
 
 from rotarykiln.commands._args import out_dir, print_json
-from rotarykiln.errors import InputError
-from rotarykiln.units import to_si
 
 __all__ = ["register", "run"]
 
@@ -38,23 +36,30 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
-    from rotarykiln.case import load_case
+    from rotarykiln.case import Cells, Time, check_quantity, load_case
     from rotarykiln.commands.run import case_path
     from rotarykiln.kiln.build import kiln_from_case
-    from rotarykiln.kiln.events import parse_transient, read_transient_file
+    from rotarykiln.kiln.events import (
+        check_output_size,
+        output_times_bound,
+        parse_transient,
+        read_transient_file,
+    )
     from rotarykiln.kiln.transient import simulate
 
-    until = to_si("--until", args.until, "time")
-    if not until > 0:
-        raise InputError("--until", args.until, "> 0 s")
+    # the ranges of the case file: a run of at most 1e10 s, at most 20,000 cells
+    until = check_quantity("--until", args.until, Time)
+    if args.cells is not None:
+        check_quantity("--cells", args.cells, Cells)
+    data = read_transient_file(args.events) if args.events else {}
     case = load_case(case_path(args.case))
     kiln, cells = kiln_from_case(case)
     if args.cells is not None:
-        if args.cells < 4:
-            raise InputError("--cells", args.cells, "an integer >= 4")
         cells = args.cells
-    data = read_transient_file(args.events) if args.events else {}
     transient = parse_transient(data, kiln, until)
+    # the profiles kept: refused before the steady start is solved or anything allocated
+    bound = output_times_bound(transient, until)
+    check_output_size(cells, bound, "--cells" if args.cells else "output_every")
     out = out_dir(args.out, f"{case.name}-transient".replace(" ", "_"))
     progress = False if args.no_progress else None  # None: a terminal or $ROTARYKILN_PROGRESS
     sol = simulate(kiln, cells, transient, until, progress=progress)

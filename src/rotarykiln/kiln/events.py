@@ -23,25 +23,41 @@ burner's products are recomputed, :func:`~rotarykiln.kiln.flame.fire`); without 
 ``gas_flow`` (composition kept) and ``gas_inlet_temperature``.
 Refused with one line (:class:`~rotarykiln.errors.InputError`) naming the event: events out of
 order, negative times or beyond the end of the run, a ramp into another event of the same
-variable, negative flows, an unknown variable.
+variable, negative flows, an unknown variable, a time without a unit (``at: 3600``), a value
+outside the range the case file accepts for it (the quantity types of :mod:`rotarykiln.case`:
+a speed of 1e6 rpm, a feed temperature of 1e-6 K), more than :data:`MAX_EVENTS` events, more
+than :data:`MAX_OUTPUT_TIMES` output times. The file is read as every YAML file is
+(:mod:`rotarykiln.yaml_limits`: size, nesting, aliases and duplicate keys limited).
 """
 
 from __future__ import annotations
 
 import copy
 import dataclasses
+import math
 from dataclasses import dataclass
 from functools import lru_cache
-from pathlib import Path
 from typing import Literal
 
 import numpy as np
-import yaml
 from pydantic import BaseModel, ConfigDict, ValidationError
 
+from rotarykiln.case import (
+    Density,
+    Instant,
+    Length,
+    Mass,
+    MassFlow,
+    RotationRate,
+    SpecificHeat,
+    Temperature,
+    Time,
+    check_quantity,
+)
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.holdup import DEFAULT_NODE_SPACING, WallProperties
-from rotarykiln.units import gas_flow, to_si
+from rotarykiln.units import gas_flow
+from rotarykiln.yaml_limits import check_structure, read_yaml_file, show_value
 
 __all__ = [
     "TransientSpec",
@@ -50,6 +66,12 @@ __all__ = [
     "read_transient_file",
     "parse_transient",
     "VARIABLES",
+    "MAX_EVENTS",
+    "MAX_OUTPUT_TIMES",
+    "MAX_OUTPUT_VALUES",
+    "MAX_WALL_NODES",
+    "check_output_size",
+    "output_times_bound",
 ]
 
 #: Event variables -> (kind of quantity, what it needs).
@@ -68,6 +90,25 @@ BURNER_VARIABLES = ("fuel_flow", "primary_air", "secondary_air")
 GAS_VARIABLES = ("gas_flow", "gas_inlet_temperature")
 #: Knots per ramp at which the derived inputs (burner products) are computed.
 RAMP_KNOTS = 11
+#: Quantity type of the case file (:mod:`rotarykiln.case`) each event variable's value is
+#: checked against (the burner's flows are checked as the case's burner flows are).
+VARIABLE_RANGES = {
+    "feed": MassFlow,
+    "feed_temperature": Temperature,
+    "speed": RotationRate,
+    "gas_flow": MassFlow,
+    "gas_inlet_temperature": Temperature,
+}
+#: Most events in a file (each cuts the run into one more integration segment; 10,000 events
+#: ran for minutes).
+MAX_EVENTS = 1000
+#: Most output times of a run (``until`` / ``output_every``; the default is 201).
+MAX_OUTPUT_TIMES = 10_000
+#: Most cells x output times of a run (the profiles kept: ~200 floats each, so at most ~1.6 GB
+#: in the worst case; the default 201 outputs allow 4,975 cells).
+MAX_OUTPUT_VALUES = 1_000_000
+#: Most lining nodes across the wall of a cell (``wall.max_node_spacing`` cuts the layers).
+MAX_WALL_NODES = 200
 
 _Q = str | float | int
 
@@ -141,39 +182,105 @@ class Transient:
     output_every: float | None
 
 
+# pydantic's names of union members in an error location (not keys of the file)
+_TAGS = {"str", "int", "float", "bool", "none", "list", "dict", "function-before"}
+# what a pydantic type check accepts, in the words of "<field>: <value> is not <accepted>"
+_SHAPES = {
+    "dict_type": "a mapping of keys",
+    "model_type": "a mapping of keys",
+    "list_type": "a list",
+    "string_type": "a text",
+    "bool_type": "true or false",
+}
+_QUANTITY_FIELDS = {
+    "at",
+    "to",
+    "over",
+    "duration",
+    "mass",
+    "density",
+    "specific_heat",
+    "thickness",
+    "max_node_spacing",
+    "output_every",
+}
+
+
 def _format_validation(exc: ValidationError, prefix: str = "") -> str:
     e = exc.errors()[0]
-    loc = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in e["loc"]).lstrip(".")
+    parts = [p for p in e["loc"] if not (isinstance(p, str) and p in _TAGS)]
+    loc = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in parts).lstrip(".")
     loc = f"{prefix}{loc}" if loc else prefix.rstrip(".") or "transient file"
+    value = show_value(e.get("input"))
     if e["type"] == "extra_forbidden":
         return f"{loc}: unknown key"
     if e["type"] == "missing":
         return f"{loc}: missing (required)"
     if e["type"] == "literal_error":
-        return f"{loc}: {e['input']!r} is not one of {e['ctx']['expected']}"
-    return f"{loc}: {e['input']!r} is not accepted ({e['msg']})"
+        return f"{loc}: {value} is not one of {e['ctx']['expected']}"
+    last = parts[-1] if parts else ""
+    if last in _QUANTITY_FIELDS and e["type"] not in ("dict_type", "model_type", "list_type"):
+        return f'{loc}: {value} is not a quantity with a unit (e.g. "1 h", "70 kg/h")'
+    return f"{loc}: {value} is not {_SHAPES.get(e['type'], 'accepted')}"
 
 
 def read_transient_file(path) -> dict:
-    """The YAML mapping of a transient file (InputError for a missing or malformed file)."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError("--events", str(path), "an existing YAML file")
-    try:
-        data = yaml.safe_load(p.read_text(encoding="utf-8"))
-    except yaml.YAMLError as exc:
-        line = getattr(getattr(exc, "problem_mark", None), "line", None)
-        where = f" (line {line + 1})" if line is not None else ""
-        raise InputError(str(path), message=f"{path}: not valid YAML{where}") from None
+    """The YAML mapping of a transient file, read within the limits of
+    :func:`rotarykiln.yaml_limits.read_yaml_file` (one-line InputError for a missing, large,
+    non-UTF-8, malformed or over-limit file, a duplicate key, a file that is not a mapping)."""
+    data = read_yaml_file(path, what="events file")
     if data is None:
         data = {}
     if not isinstance(data, dict):
-        raise InputError(str(path), message=f"{path}: expected a mapping (start, events, ...)")
+        raise InputError(
+            str(path),
+            message=f"{path}: not an events file (a YAML mapping of start:, events:, tracer:, "
+            "wall:, output_every:)",
+        )
     return data
 
 
-def _time(field, value) -> float:
-    return to_si(field, value, "time")
+def _time(field, value, kind=Time) -> float:
+    """A time of the events file in s: with a unit (a bare number other than 0 is refused),
+    in the range of ``kind`` (:data:`rotarykiln.case.Time`, or :data:`~rotarykiln.case.Instant`
+    for a moment that may be 0)."""
+    if isinstance(value, int | float) and not isinstance(value, bool) and value != 0:
+        raise InputError(
+            field,
+            message=f"{field}: bare number {show_value(value)} needs a unit (e.g. "
+            f'"{show_value(value)} s", "1 h")',
+        )
+    return check_quantity(field, value, kind)
+
+
+def output_times_bound(transient: Transient, until: float) -> int:
+    """At most how many output times a run of ``transient`` to ``until`` (s) keeps: every
+    ``output_every`` (default ``until`` / 200) and the start and end of every event."""
+    every = transient.output_every or until / 200.0
+    return int(until / every) + 2 + 2 * len(transient.events) + 4
+
+
+def check_output_size(n_cells: int, n_times: int, field: str = "output_every") -> None:
+    """Refuse a run whose profiles would exceed :data:`MAX_OUTPUT_TIMES` output times or
+    :data:`MAX_OUTPUT_VALUES` cells x output times, before anything is allocated.
+
+    Raises
+    ------
+    InputError
+        One line naming ``field`` and the limit.
+    """
+    if n_times > MAX_OUTPUT_TIMES:
+        raise InputError(
+            field,
+            message=f"{field}: {n_times} output times is too many (at most {MAX_OUTPUT_TIMES}; "
+            "give a longer output_every or a shorter --until)",
+        )
+    if n_cells * n_times > MAX_OUTPUT_VALUES:
+        raise InputError(
+            field,
+            message=f"{field}: {n_cells} cells x {n_times} output times is too many (at most "
+            f"{MAX_OUTPUT_VALUES:,} cell-times; give fewer --cells or a longer output_every)",
+        )
 
 
 def parse_transient(data: dict, kiln, until: float) -> Transient:
@@ -193,8 +300,16 @@ def parse_transient(data: dict, kiln, until: float) -> Transient:
     ...                 kiln, 7200.0)
     Traceback (most recent call last):
     ...
-    rotarykiln.errors.InputError: events[0].variable: 'colour' is not one of feed, feed_temperature, speed, drum, gas_flow, gas_inlet_temperature
+    rotarykiln.errors.InputError: events[0].variable: "colour" is not one of feed, feed_temperature, speed, drum, gas_flow, gas_inlet_temperature
     """
+    if not isinstance(data, dict):
+        raise InputError("transient file", message="transient file: expected a mapping")
+    check_structure(data, "transient file")
+    if isinstance(data.get("events"), list) and len(data["events"]) > MAX_EVENTS:
+        raise InputError(
+            "events",
+            message=f"events: {len(data['events'])} events is too many (at most {MAX_EVENTS})",
+        )
     try:
         spec = TransientSpec.model_validate(data)
     except ValidationError as exc:
@@ -206,9 +321,7 @@ def parse_transient(data: dict, kiln, until: float) -> Transient:
     previous = 0.0
     for i, e in enumerate(spec.events):
         label = f"events[{i}]"
-        t = _time(f"{label}.at", e.at)
-        if t < 0:
-            raise InputError(f"{label}.at", e.at, ">= 0 s")
+        t = _time(f"{label}.at", e.at, Instant)
         if t > until:
             raise InputError(f"{label}.at", e.at, f"<= the end of the run ({until:g} s)")
         if t < previous:
@@ -219,15 +332,14 @@ def parse_transient(data: dict, kiln, until: float) -> Transient:
         if e.variable not in allowed:
             raise InputError(
                 f"{label}.variable",
-                message=f"{label}.variable: {e.variable!r} is not one of " + ", ".join(allowed),
+                message=f"{label}.variable: {show_value(e.variable)} is not one of "
+                + ", ".join(allowed),
             )
         duration = 0.0
         if e.over is not None:
             if e.variable == "drum":
                 raise InputError(f"{label}.over", e.over, "absent for the drum (a stop is a step)")
             duration = _time(f"{label}.over", e.over)
-            if duration <= 0:
-                raise InputError(f"{label}.over", e.over, "> 0 s")
             if t + duration > until * (1 + 1e-12):
                 raise InputError(
                     f"{label}.over",
@@ -246,25 +358,20 @@ def parse_transient(data: dict, kiln, until: float) -> Transient:
     tracer = None
     if spec.tracer is not None:
         s = spec.tracer
-        t0 = _time("tracer.at", s.at)
+        t0 = _time("tracer.at", s.at, Instant)
         dt = _time("tracer.duration", s.duration)
-        if t0 < 0:
-            raise InputError("tracer.at", s.at, ">= 0 s")
-        if dt <= 0:
-            raise InputError("tracer.duration", s.duration, "> 0 s")
         if t0 + dt > until:
             raise InputError("tracer.duration", s.duration, f"a pulse ending by {until:g} s")
         mass = None
         if s.mass is not None:
-            mass = to_si("tracer.mass", s.mass, "mass")
-            if mass <= 0:
-                raise InputError("tracer.mass", s.mass, "> 0 kg")
+            mass = check_quantity("tracer.mass", s.mass, Mass)
         tracer = (t0, dt, mass)
     every = None
     if spec.output_every is not None:
         every = _time("output_every", spec.output_every)
-        if not 0 < every <= until:
+        if not every <= until:
             raise InputError("output_every", spec.output_every, f"in (0, {until:g}] s")
+        check_output_size(1, int(until / every) + 1)
     return Transient(spec.start, tuple(events), tracer, _wall(spec.wall, kiln), every)
 
 
@@ -272,7 +379,7 @@ def _event_value(label, variable, value, kiln):
     field = f"{label}.to"
     if variable == "drum":
         if value not in ("stop", "run"):
-            raise InputError(field, message=f"{field}: {value!r} is not stop or run")
+            raise InputError(field, message=f"{field}: {show_value(value)} is not stop or run")
         return value
     if variable in BURNER_VARIABLES:
         from rotarykiln.kiln.flame import AIR
@@ -281,13 +388,12 @@ def _event_value(label, variable, value, kiln):
         comp = kiln.flame.burner.fuel if variable == "fuel_flow" else AIR
         flow = gas_flow(value, field, allow_zero=variable != "fuel_flow")
         return flow.mass_flow(molar_mass(comp))
-    kind = VARIABLES[variable]
-    v = to_si(field, value, kind)
-    if kind in ("mass flow", "temperature", "rotation rate") and not v > 0:
-        accepted = "> 0 kg/s" if kind == "mass flow" else "> 0"
+    v = check_quantity(field, value, VARIABLE_RANGES[variable])
+    if not v > 0:  # a flow of 0 (the ranges of the case accept a zero feed)
+        accepted = "> 0 kg/s"
         if variable == "feed":
             accepted += " (to stop the solids use variable: drum, to: stop)"
-        raise InputError(field, value, accepted)
+        raise InputError(field, message=f"{field}: {show_value(value)} is not {accepted}")
     return v
 
 
@@ -295,11 +401,21 @@ def _wall(spec: WallSpec | None, kiln) -> WallProperties:
     spec = spec or WallSpec()
     spacing = DEFAULT_NODE_SPACING
     if spec.max_node_spacing is not None:
-        spacing = to_si("wall.max_node_spacing", spec.max_node_spacing, "length")
+        spacing = check_quantity("wall.max_node_spacing", spec.max_node_spacing, Length)
+    nodes = sum(max(1, math.ceil(layer.thickness / spacing - 1e-9)) for layer in kiln.layers)
+    if nodes > MAX_WALL_NODES:
+        shown = spec.max_node_spacing if spec.max_node_spacing is not None else f"{spacing} m"
+        raise InputError(
+            "wall.max_node_spacing",
+            message=f"wall.max_node_spacing: {show_value(shown)} cuts the lining into {nodes} "
+            f"nodes across the wall (at most {MAX_WALL_NODES}; give a larger spacing)",
+        )
+    if len(spec.layers) > MAX_WALL_NODES:
+        raise InputError("wall.layers", message=f"wall.layers: more than {MAX_WALL_NODES} layers")
     layers = tuple(
         (
-            to_si(f"wall.layers[{i}].density", w.density, "density"),
-            to_si(f"wall.layers[{i}].specific_heat", w.specific_heat, "specific heat"),
+            check_quantity(f"wall.layers[{i}].density", w.density, Density),
+            check_quantity(f"wall.layers[{i}].specific_heat", w.specific_heat, SpecificHeat),
         )
         for i, w in enumerate(spec.layers)
     )
@@ -322,9 +438,9 @@ def _wall(spec: WallSpec | None, kiln) -> WallProperties:
                 "to give it a heat capacity)",
             )
         lumped = (
-            to_si("wall.thickness", spec.thickness, "length"),
-            to_si("wall.density", spec.density, "density"),
-            to_si("wall.specific_heat", spec.specific_heat, "specific heat"),
+            check_quantity("wall.thickness", spec.thickness, Length),
+            check_quantity("wall.density", spec.density, Density),
+            check_quantity("wall.specific_heat", spec.specific_heat, SpecificHeat),
         )
     return WallProperties(layers, lumped, spacing)
 

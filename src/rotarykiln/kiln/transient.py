@@ -53,7 +53,14 @@ from scipy.sparse import lil_matrix
 
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln.dispersion import dispersion_sources
-from rotarykiln.kiln.events import Inputs, Schedule, Transient, shallow_with
+from rotarykiln.kiln.events import (
+    Inputs,
+    Schedule,
+    Transient,
+    check_output_size,
+    output_times_bound,
+    shallow_with,
+)
 from rotarykiln.kiln.holdup import Holdup, WallProperties, refine_lining
 from rotarykiln.kiln.residual import T_FLOOR, KilnResidual
 from rotarykiln.kiln.transient_result import TransientSolution
@@ -427,6 +434,12 @@ def simulate(
     """
     if not until > 0:
         raise InputError("--until", until, "> 0 s")
+    # the profiles kept (cells x output times, the events' times included) are bounded before
+    # anything is allocated (kiln.events.MAX_OUTPUT_TIMES, MAX_OUTPUT_VALUES)
+    if times is None:
+        check_output_size(n_cells, output_times_bound(transient, until))
+    else:
+        check_output_size(n_cells, int(np.size(times)) + 2 * len(transient.events) + 4, "times")
     tk = TransientKiln(kiln, n_cells, transient.wall)
     res = tk.res
     sched = Schedule(kiln, res.bed_names, res.gas_names, transient.events, until, transient.tracer)
