@@ -151,6 +151,12 @@ class _FailingStore:
     def __init__(self, error: Exception):
         self.error = error
 
+    def check_free(self, light=None):
+        pass
+
+    def is_light(self, raw):
+        return True
+
     def run(self, raw, source="case"):
         raise self.error
 

@@ -3,6 +3,11 @@
 Errors never replace results: a failed load or run changes only the error messages (next to the
 field they concern when it is a shown input, else next to the upload or the Run button), so what
 was already computed stays on the page and the fields keep what the user typed.
+
+Every value a callback receives comes from the browser and is checked first
+(:mod:`rotarykiln.app.checks`): the case text the page sends back with Run is read again as an
+upload is, a case naming a file is refused, and a run goes to the run store's worker within its
+bounds (:mod:`rotarykiln.app.running`); a busy server answers so at once.
 """
 
 from __future__ import annotations
@@ -14,14 +19,26 @@ from pathlib import Path
 import yaml
 from dash import ALL, MATCH, Input, Output, State, ctx, dcc, no_update
 
+from rotarykiln.app.checks import (
+    case_from_state,
+    check_run_size,
+    clicks,
+    fields_from_state,
+    inputs_from_state,
+    outlet_from_state,
+    parse_app_case,
+    shown_paths,
+    source_label,
+)
 from rotarykiln.app.figures import composition_figure, temperature_figure
 from rotarykiln.app.inputs import apply_edits, check_value, field_of_error, present_inputs
 from rotarykiln.app.layout import input_rows, results_view
 from rotarykiln.app.loading import load_builtin, load_upload
-from rotarykiln.app.running import RunStore, outlet_temperature
-from rotarykiln.case import parse_case
+from rotarykiln.app.running import RunStopped, RunStore, ServerBusy, outlet_temperature
+from rotarykiln.case import MAX_CASE_BYTES
 from rotarykiln.case_io import case_to_yaml
 from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.yaml_limits import load_yaml_text
 
 __all__ = ["press", "register_callbacks", "render"]
 
@@ -32,10 +49,12 @@ def _dump(raw: dict) -> str:
     return yaml.safe_dump(raw, sort_keys=False, allow_unicode=True, width=100)
 
 
-def _validate(raw: dict, source: str, paths: list[str]) -> tuple[dict[str, str], str]:
+def _validate(
+    raw: dict, source: str, paths: list[str], max_cells: int
+) -> tuple[dict[str, str], str]:
     """Errors of a raw case: (path -> message for a shown input, message for the rest)."""
     try:
-        parse_case(raw, source=source)
+        check_run_size(parse_app_case(raw, source=source), max_cells)
     except InputError as exc:
         path = field_of_error(exc, paths)
         return ({path: str(exc)}, "") if path else ({}, str(exc))
@@ -47,7 +66,7 @@ _KEEP = (no_update, no_update)  # no file, the results panel as it is
 
 def render(result: dict) -> list:
     """The results panel of a run (the data :func:`press` stores)."""
-    raw = yaml.safe_load(result.get("case_yaml") or "{}")
+    raw = load_yaml_text(result.get("case_yaml") or "{}", "the run's case", what="case file")
     figures = []
     for name, profiles in result["profiles"].items():
         title = result["name"] if len(result["profiles"]) == 1 else f"{result['name']} ({name})"
@@ -67,26 +86,33 @@ def render(result: dict) -> list:
 def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, previous):
     """Run (or, with ``saving``, save) the loaded case with the fields' values.
 
-    Returns the outputs of the Run and Save buttons: the new result (or ``no_update``: what was
-    computed stays), the errors by field, the message under the buttons, the status line, the
-    file to download, and the results panel (drawn with the status line, in one answer).
+    Returns the outputs of the Run and Save buttons: the new result's inputs and outlet
+    temperature (or ``no_update``: what was computed stays), the errors by field, the message
+    under the buttons, the status line, the file to download, and the results panel (drawn with
+    the status line, in one answer). Every argument but ``store`` and ``saving`` comes from the
+    browser and is checked before it is used.
     """
-    n = (n_run or 0) + (n_save or 0)  # a new status line for every press
+    n_run, n_save = clicks(n_run), clicks(n_save)
+    n = n_run + n_save  # a new status line for every press
     what = f"Save {n_save}" if saving else f"Run {n_run}"
     keep = "" if saving else " The results shown are those of the last successful run."
     if not case_data:
         return no_update, no_update, "Load a case first.", f"{what} not done.", *_KEEP
-    paths = [i["path"] for i in ids]
-    source = case_data["source"]
+    paths = shown_paths(ids)
     started = time.perf_counter()
     try:
-        raw = apply_edits(yaml.safe_load(case_data["yaml"]), dict(zip(paths, values, strict=True)))
+        if not saving:
+            store.check_free()  # a busy answer at once, before reading the case
+        fields = fields_from_state(values, ids)
+        raw, source = case_from_state(case_data)
+        raw = apply_edits(raw, fields)
         if saving:
-            text = case_to_yaml(parse_case(raw, source=source))
+            text = case_to_yaml(parse_app_case(raw, source=source))
             name = f"{Path(source).stem or 'case'}.yaml"
             status = f"{what}: {name}, the case as edited, with units."
             download = dcc.send_string(text, name)
             return no_update, {"n": n, "errors": {}}, "", status, download, no_update
+        store.check_free(store.is_light(raw))  # busy at once, before the case is validated
         result = store.run(raw, source=source)
     except InputError as exc:
         path = field_of_error(exc, paths)
@@ -98,18 +124,25 @@ def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, 
     except ConvergenceError as exc:
         message = f"solver failed: {exc}"
         return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", *_KEEP
+    except ServerBusy as exc:
+        status = f"{what} not done: the server is busy, try again.{keep}"
+        return no_update, {"n": n, "errors": {}}, str(exc), status, *_KEEP
+    except RunStopped as exc:
+        message = f"{exc} (fewer solver.cells run faster; `rotarykiln run` has no such limit)"
+        return no_update, {"n": n, "errors": {}}, message, f"{what} stopped.{keep}", *_KEEP
     except Exception as exc:  # a bug, not the user's: the app goes on
         log.exception("run failed")
         message = f"internal error: {type(exc).__name__}: {exc}"
         return no_update, {"n": n, "errors": {}}, message, f"{what} failed.{keep}", *_KEEP
     data = result.to_json()
     data["case_yaml"] = _dump(raw)
-    data["inputs"] = {"source": source, **dict(zip(paths, values, strict=True))}
-    before = outlet_temperature((previous or {}).get("summary") or {})
-    data["previous_outlet"] = before[1] if before else None
+    data["previous_outlet"] = outlet_from_state(previous)
+    outlet = outlet_temperature(data["summary"])
+    # the page keeps only what later callbacks need: the inputs of this run and its outlet
+    kept = {"inputs": {"source": source, **fields}, "outlet": outlet[1] if outlet else None}
     seconds = time.perf_counter() - started
     status = f"{what} finished in {seconds:.1f} s: {result.name}"
-    return data, {"n": n, "errors": {}}, "", status, no_update, render(data)
+    return kept, {"n": n, "errors": {}}, "", status, no_update, render(data)
 
 
 def register_callbacks(app, store: RunStore) -> None:
@@ -129,25 +162,31 @@ def register_callbacks(app, store: RunStore) -> None:
         State("case-upload", "filename"),
     )
     def load(name, contents, filename):
-        if ctx.triggered_id == "case-upload":
-            try:
+        try:
+            if ctx.triggered_id == "case-upload":
                 raw = load_upload(contents, filename)
-            except InputError as exc:  # nothing else changes: the loaded case stays
-                return (no_update,) * 2 + (str(exc),) + (no_update,) * 5
-            source, info, picker = str(filename), f"Loaded: {filename} (uploaded)", None
-        else:
-            if not name:
-                return (no_update,) * 8
-            try:
+                source = source_label(filename)
+                info, picker = f"Loaded: {source} (uploaded)", None
+            else:
+                if not name:
+                    return (no_update,) * 8
                 raw = load_builtin(name)
-            except InputError as exc:
-                return (no_update,) * 2 + (str(exc),) + (no_update,) * 5
-            source, info, picker = name, f"Loaded: {name} (built-in)", no_update
+                source, info, picker = name, f"Loaded: {name} (built-in)", no_update
+            text = _dump(raw)
+            if len(text.encode("utf-8", "surrogatepass")) > MAX_CASE_BYTES:
+                raise InputError(
+                    source,
+                    message=f"{source}: too large for a case file once its YAML aliases are "
+                    f"written out (at most {MAX_CASE_BYTES / 1e6:g} MB; a case is a few kB)",
+                )
+        except InputError as exc:  # nothing else changes: the loaded case stays
+            return (no_update,) * 2 + (str(exc),) + (no_update,) * 5
         items = present_inputs(raw)
-        field_errors, case_error = _validate(raw, source, [i.path for i, _ in items])
+        paths = [i.path for i, _ in items]
+        field_errors, case_error = _validate(raw, source, paths, store.max_cells)
         if case_error:
             case_error = f"This case has an error: {case_error}"
-        data = {"yaml": _dump(raw), "source": source}
+        data = {"yaml": text, "source": source}
         return (
             data,
             input_rows(items, field_errors),
@@ -167,9 +206,15 @@ def register_callbacks(app, store: RunStore) -> None:
         prevent_initial_call=True,
     )
     def check_field(value, run_errors, ident):
-        path = ident["path"]
-        if ctx.triggered_id == "run-errors" and path in (run_errors or {}).get("errors", {}):
-            return run_errors["errors"][path]
+        try:
+            path = next(iter(fields_from_state([value], [ident])))
+        except InputError as exc:
+            return str(exc)
+        if ctx.triggered_id == "run-errors":
+            errors = run_errors.get("errors") if isinstance(run_errors, dict) else None
+            message = errors.get(path) if isinstance(errors, dict) else None
+            if isinstance(message, str):
+                return message[:1000]
         try:
             check_value(path, value)
         except InputError as exc:
@@ -207,10 +252,16 @@ def register_callbacks(app, store: RunStore) -> None:
         State("case-store", "data"),
     )
     def stale(values, ids, result, case_data):
-        if not result or not case_data:
+        before = inputs_from_state(result)
+        if before is None or not isinstance(case_data, dict):
             return ""
-        now = {"source": case_data["source"]}
-        now.update({i["path"]: v for i, v in zip(ids, values, strict=True)})
-        if now == result.get("inputs"):
+        try:
+            now = {
+                "source": source_label(case_data.get("source")),
+                **fields_from_state(values, ids),
+            }
+        except InputError:
+            return ""
+        if now == before:
             return ""
         return "The inputs have changed since these results: press Run to update them."

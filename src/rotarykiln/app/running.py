@@ -2,13 +2,22 @@
 the files for download.
 
 Each run gets its own folder under one temporary root (removed when the app stops); the last
-:data:`KEEP_RUNS` runs are kept. Runs are serialised by a lock: the models and matplotlib are
-not meant to run in two threads at once, and the web server answers in threads.
+:data:`KEEP_RUNS` runs are kept. A run is done by a worker process
+(:class:`~rotarykiln.app.worker.Worker`), one at a time, within bounds no client can lift: at
+most :data:`~rotarykiln.app.checks.MAX_APP_CELLS` cells, :data:`MAX_RUN_SECONDS` and
+:data:`MAX_RUN_BYTES` of memory (the worker is killed beyond them), and at most
+:data:`MAX_WAITING` runs waiting for their turn: one more is refused at once
+(:class:`ServerBusy`) instead of waiting. Light runs (at most :data:`LIGHT_CELLS` cells, such
+as every built-in case) have a lane of their own and are served first, so that heavy runs never
+hold one up for more than the run in progress. The page gets the profiles thinned to
+:data:`MAX_SHOWN_POINTS` rows (the tables for download keep every cell).
 """
 
 from __future__ import annotations
 
 import atexit
+import collections
+import contextlib
 import json
 import math
 import re
@@ -16,22 +25,54 @@ import shutil
 import tempfile
 import threading
 import uuid
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pandas as pd
 
-from rotarykiln.case import parse_case
+from rotarykiln.app.checks import MAX_APP_CELLS, check_run_size, parse_app_case
+from rotarykiln.app.worker import START_SECONDS, RunStopped, Worker, process_rss
 from rotarykiln.case_io import case_to_yaml
 
-__all__ = ["KEEP_RUNS", "RunResult", "RunStore", "outlet_temperature"]
+__all__ = [
+    "KEEP_RUNS",
+    "LIGHT_CELLS",
+    "LIGHT_WAITING",
+    "MAX_RUN_BYTES",
+    "MAX_RUN_SECONDS",
+    "MAX_SHOWN_POINTS",
+    "MAX_WAITING",
+    "RunResult",
+    "RunStopped",
+    "RunStore",
+    "ServerBusy",
+    "outlet_temperature",
+]
 
 KEEP_RUNS = 20
 """Runs whose files the app keeps for download (the oldest goes first)."""
+MAX_RUN_SECONDS = 30.0
+"""Longest run, s (the heaviest built-in case at the most cells the app runs takes about 8 s)."""
+MAX_RUN_BYTES = 1_500_000_000
+"""Most resident memory of the process running a case, bytes (about 0.4 GB at the most cells)."""
+MAX_WAITING = 2
+"""Most runs waiting for their turn behind the one running; one more is refused at once."""
+MAX_SHOWN_POINTS = 400
+"""Most rows of a profile sent to the page (the tables for download keep every cell)."""
+LIGHT_CELLS = 200
+"""Runs of at most this many cells are light: they have a lane of their own, served first."""
+LIGHT_WAITING = 1
+"""Most light runs waiting for their turn (besides the heavy ones)."""
+_RECYCLE_BYTES = 800_000_000  # a worker grown past this after a run is replaced
 
 _OUTLET = re.compile(r"(^|_)bed_outlet_temperature_K$")
+
+
+class ServerBusy(RuntimeError):
+    """A run refused at once: one is running and its lane is full (:data:`MAX_WAITING` heavy
+    runs, or :data:`LIGHT_WAITING` light ones, waiting)."""
 
 
 def outlet_temperature(summary: dict) -> tuple[str, float] | None:
@@ -58,7 +99,7 @@ class RunResult:
     files: list[str] = field(default_factory=list)
 
     def to_json(self) -> dict[str, Any]:
-        """Plain data for the page's store (non-finite numbers as None)."""
+        """Plain data for the page (non-finite numbers as None)."""
         return _plain(
             {
                 "run_id": self.run_id,
@@ -82,24 +123,133 @@ def _plain(value: Any) -> Any:
 
 
 class RunStore:
-    """Run folders of one app, under a temporary root removed at exit."""
+    """Run folders of one app, under a temporary root removed at exit, and the worker process
+    that runs the cases (started at the first run, or by :meth:`start`; :meth:`close` ends it).
 
-    def __init__(self, root: str | Path | None = None, keep: int = KEEP_RUNS):
+    Parameters
+    ----------
+    root : path, optional
+        Where the run folders go (a new temporary folder by default).
+    keep : int
+        Runs whose files are kept.
+    max_seconds, max_bytes, max_waiting, max_cells
+        The bounds of a run (:data:`MAX_RUN_SECONDS`, :data:`MAX_RUN_BYTES`,
+        :data:`MAX_WAITING`, :data:`~rotarykiln.app.checks.MAX_APP_CELLS`).
+    """
+
+    def __init__(
+        self,
+        root: str | Path | None = None,
+        keep: int = KEEP_RUNS,
+        *,
+        max_seconds: float = MAX_RUN_SECONDS,
+        max_bytes: int = MAX_RUN_BYTES,
+        max_waiting: int = MAX_WAITING,
+        max_cells: int = MAX_APP_CELLS,
+    ):
         if root is None:
             root = tempfile.mkdtemp(prefix="rotarykiln-app-")
             atexit.register(shutil.rmtree, root, ignore_errors=True)
         self.root = Path(root)
         self.root.mkdir(parents=True, exist_ok=True)
         self.keep = keep
-        self._lock = threading.Lock()
+        self.max_seconds = max_seconds
+        self.max_bytes = max_bytes
+        self.max_waiting = max_waiting
+        self.max_cells = max_cells
+        self._heavy: collections.deque = collections.deque()  # heavy runs, running or waiting
+        self._light: collections.deque = collections.deque()  # light ones
+        self._running: object | None = None
+        self._changed = threading.Condition()
         self._order: list[str] = []
+        self._worker: Worker | None = None
+        atexit.register(self.close)
 
     def folder(self, run_id: str) -> Path | None:
         """The folder of a kept run, else None (an unknown or removed id)."""
-        if not re.fullmatch(r"[0-9a-f]{32}", run_id or ""):
+        if not isinstance(run_id, str) or not re.fullmatch(r"[0-9a-f]{32}", run_id):
             return None
         path = self.root / run_id
         return path if path.is_dir() else None
+
+    def start(self) -> RunStore:
+        """Start the worker process now (it takes about 2 s) rather than at the first run."""
+        with self._changed:
+            if self._worker is None or not self._worker.alive():
+                self._worker = Worker()
+        return self
+
+    def close(self) -> None:
+        """End the worker process (a run in progress is stopped)."""
+        worker, self._worker = self._worker, None
+        if worker is not None:
+            worker.stop()
+
+    def worker_pid(self) -> int | None:
+        """The process id of the worker, if one is running."""
+        worker = self._worker
+        return worker.pid if worker is not None and worker.alive() else None
+
+    def check_free(self, light: bool | None = None) -> None:
+        """Refuse at once when a run cannot wait for its turn now: a heavy run (``light``
+        False), a light one (True), or either (None: before the case is read).
+
+        Raises
+        ------
+        ServerBusy
+            The run's lane is full: a run is running and :attr:`max_waiting` heavy runs (or
+            :data:`LIGHT_WAITING` light ones) are waiting.
+        """
+        heavy_full = len(self._heavy) > self.max_waiting
+        light_full = len(self._light) > LIGHT_WAITING
+        if light is None:
+            full = heavy_full and light_full
+        else:
+            full = light_full if light else heavy_full
+        if full:
+            waiting = len(self._heavy) + len(self._light) - (self._running is not None)
+            raise ServerBusy(
+                f"the server is busy (a run and {waiting} waiting): try again in a minute"
+            )
+
+    @staticmethod
+    def is_light(raw: Any) -> bool:
+        """Whether a raw case is a light run (at most :data:`LIGHT_CELLS` cells), from its
+        mapping: a cheap look before it is validated (a cells value that is not an integer is
+        taken as heavy; the run itself goes by the validated case)."""
+        solver = raw.get("solver") if isinstance(raw, dict) else None
+        cells = solver.get("cells", 100) if isinstance(solver, dict) else 100
+        return isinstance(cells, int) and not isinstance(cells, bool) and cells <= LIGHT_CELLS
+
+    @contextlib.contextmanager
+    def _turn(self, light: bool):
+        """Wait for this run's turn, or refuse at once when its lane is full. The worker takes
+        the oldest light run first, else the oldest heavy one."""
+        token = object()
+        lane = self._light if light else self._heavy
+
+        def mine() -> bool:
+            if self._running is not None or lane[0] is not token:
+                return False
+            return light or not self._light
+
+        with self._changed:
+            self.check_free(light)
+            lane.append(token)
+            # the runs ahead end within their bound, so this wait does too (the timeout: a guard)
+            bound = (self.max_waiting + LIGHT_WAITING + 1) * (self.max_seconds + START_SECONDS)
+            if not self._changed.wait_for(mine, timeout=bound):
+                lane.remove(token)
+                self._changed.notify_all()
+                raise ServerBusy("the server is busy: try again in a minute")
+            self._running = token
+        try:
+            yield
+        finally:
+            with self._changed:
+                lane.remove(token)
+                self._running = None
+                self._changed.notify_all()
 
     def run(self, raw: dict, source: str = "case") -> RunResult:
         """Validate a raw case mapping and run it (summary, tables, figures, report.html).
@@ -107,56 +257,53 @@ class RunStore:
         Raises
         ------
         InputError
-            The case is not valid (the message of :func:`rotarykiln.case.parse_case`).
+            The case is not valid (the message of :func:`rotarykiln.case.parse_case`), names a
+            file, or has more cells than the app runs.
         ConvergenceError
             A solver failed.
+        ServerBusy
+            A run is running and :attr:`max_waiting` are waiting: refused at once.
+        RunStopped
+            The run went over :attr:`max_seconds` or :attr:`max_bytes` and was stopped.
         """
-        case = parse_case(raw, source=source)
-        run_id = uuid.uuid4().hex
-        out = self.root / run_id
-        out.mkdir()
-        try:
-            with self._lock:
-                caught = _run_case(case, out, source)
-        except BaseException:
-            shutil.rmtree(out, ignore_errors=True)
-            raise
-        (out / "case.yaml").write_text(case_to_yaml(case), encoding="utf-8")
-        self._order.append(run_id)
-        while len(self._order) > self.keep:
-            shutil.rmtree(self.root / self._order.pop(0), ignore_errors=True)
-        summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+        case = parse_app_case(raw, source=source)
+        check_run_size(case, self.max_cells)
+        with self._turn(case.solver.cells <= LIGHT_CELLS):
+            run_id = uuid.uuid4().hex
+            out = self.root / run_id
+            out.mkdir()
+            try:
+                caught = self._in_worker(raw, out, source)
+            except BaseException:
+                shutil.rmtree(out, ignore_errors=True)
+                raise
+            (out / "case.yaml").write_text(case_to_yaml(case), encoding="utf-8")
+            self._order.append(run_id)
+            while len(self._order) > self.keep:
+                shutil.rmtree(self.root / self._order.pop(0), ignore_errors=True)
+            summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+            profiles, files = _profiles(out), _files(out)
         return RunResult(
             run_id=run_id,
             name=str(summary.get("name") or source),
             summary=summary,
-            profiles=_profiles(out),
+            profiles=profiles,
             warnings=caught,
-            files=_files(out),
+            files=files,
         )
 
-
-def _run_case(case, out: Path, source: str) -> list[str]:
-    """``run_case(..., report=True)`` with its warnings collected (not printed); their texts."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    from rotarykiln.commands.run import run_case
-
-    shown: list[str] = []
-
-    def collect(message, category, filename, lineno, file=None, line=None):
-        text = str(message)
-        if text not in shown:
-            shown.append(text)
-
-    previous = warnings.showwarning
-    warnings.showwarning = collect
-    try:
-        run_case(case, out, report=True, source=source)
-    finally:
-        warnings.showwarning = previous
-    return shown
+    def _in_worker(self, raw: dict, out: Path, source: str) -> list[str]:
+        """Run in the worker (one is started when there is none); a worker stopped, ended or
+        grown large is replaced at the next run."""
+        self.start()
+        worker = self._worker
+        try:
+            return worker.run(raw, out, source, self.max_seconds, self.max_bytes)
+        finally:
+            rss = process_rss(worker.pid) if worker.alive() else None
+            if not worker.alive() or (rss is not None and rss > _RECYCLE_BYTES):
+                worker.stop()
+                self._worker = None
 
 
 _ORDER = {".html": 0, ".yaml": 1, ".csv": 2, ".json": 3, ".txt": 4, ".png": 5, ".svg": 5}
@@ -167,11 +314,14 @@ def _files(out: Path) -> list[str]:
     return sorted(names, key=lambda n: (_ORDER.get(Path(n).suffix, 9), n))
 
 
-def _profiles(out: Path) -> dict[str, dict[str, list]]:
-    """The ``*_profiles.csv`` tables of a run: name -> column -> values."""
+def _profiles(out: Path, rows: int = MAX_SHOWN_POINTS) -> dict[str, dict[str, list]]:
+    """The ``*_profiles.csv`` tables of a run: name -> column -> values, at most ``rows`` rows
+    (evenly spaced, the first and the last kept)."""
     tables = {}
     for path in sorted(out.glob("*_profiles.csv")):
         frame = pd.read_csv(path).select_dtypes("number").astype(float)
+        if len(frame) > rows:
+            frame = frame.iloc[np.unique(np.linspace(0, len(frame) - 1, rows).round().astype(int))]
         tables[path.stem.removesuffix("_profiles")] = {
             c: [v if math.isfinite(v) else None for v in frame[c].tolist()] for c in frame.columns
         }

@@ -3,6 +3,12 @@
 :func:`create_app` builds the app (page, callbacks, the ``/files/<run>/<name>`` route that serves
 a run's report and tables); :func:`serve` runs it with Werkzeug's threaded server until
 interrupted; :class:`AppServer` runs it in a background thread (tests, notebooks) and stops it.
+
+No client can tie the server up: a request body over
+:data:`~rotarykiln.app.checks.MAX_REQUEST_BYTES` is refused (413) before it is read, at most
+:data:`MAX_POSTS` posts are handled at once (one more waits up to :data:`POST_WAIT` s, then is
+answered 503, busy), a request the app cannot read (nested too deeply, not what a callback takes)
+is answered 400 in one line, and runs have their own bounds (:mod:`rotarykiln.app.running`).
 """
 
 from __future__ import annotations
@@ -11,7 +17,45 @@ import logging
 import threading
 from pathlib import Path
 
-__all__ = ["AppServer", "create_app", "serve"]
+__all__ = ["MAX_POSTS", "POST_WAIT", "AppServer", "create_app", "serve"]
+
+MAX_POSTS = 8
+"""Most posts (callbacks) the server handles at once; each holds at most its body and its
+answer in memory."""
+POST_WAIT = 5.0
+"""Longest wait of a post for its turn before a busy answer (503), s."""
+
+log = logging.getLogger(__name__)
+
+
+class _Admission:
+    """WSGI middleware: at most ``slots`` posts handled at once; one more waits at most ``wait``
+    seconds, then gets 503 (busy)."""
+
+    def __init__(self, app, slots: int = MAX_POSTS, wait: float = POST_WAIT):
+        self.app = app
+        self.wait = wait
+        self._slots = threading.BoundedSemaphore(slots)
+
+    def __call__(self, environ, start_response):
+        if environ.get("REQUEST_METHOD") != "POST":
+            return self.app(environ, start_response)
+        if not self._slots.acquire(timeout=self.wait):
+            body = b"the server is busy: try again in a minute\n"
+            start_response(
+                "503 Service Unavailable",
+                [
+                    ("Content-Type", "text/plain; charset=utf-8"),
+                    ("Content-Length", str(len(body))),
+                    ("Retry-After", "30"),
+                    ("Connection", "close"),
+                ],
+            )
+            return [body]
+        try:
+            return self.app(environ, start_response)
+        finally:
+            self._slots.release()
 
 
 def create_app(store=None):
@@ -19,8 +63,10 @@ def create_app(store=None):
     :class:`~rotarykiln.app.running.RunStore`, a fresh temporary one by default)."""
     from dash import Dash
     from flask import abort, request, send_from_directory
+    from werkzeug.exceptions import HTTPException
 
     from rotarykiln.app.callbacks import register_callbacks
+    from rotarykiln.app.checks import MAX_REQUEST_BYTES
     from rotarykiln.app.layout import page
     from rotarykiln.app.loading import builtin_cases
     from rotarykiln.app.running import RunStore
@@ -38,6 +84,24 @@ def create_app(store=None):
     app.index_string = index_string()
     app.layout = page(builtin_cases())
     register_callbacks(app, store)
+    server = app.server
+    server.config["MAX_CONTENT_LENGTH"] = MAX_REQUEST_BYTES  # 413 before the body is read
+    server.wsgi_app = _Admission(server.wsgi_app)
+
+    @server.errorhandler(413)
+    def too_large(_):
+        return f"the request is too large (at most {MAX_REQUEST_BYTES / 1e6:g} MB)\n", 413
+
+    @server.errorhandler(Exception)
+    def unreadable(error):
+        """A request no callback can take (JSON nested too deeply, ids or values of the wrong
+        shape): a one-line 400, a one-line note in the log, no traceback."""
+        if isinstance(error, HTTPException):
+            return error
+        log.warning(
+            "refused a request to %s: %s: %.200s", request.path, type(error).__name__, error
+        )
+        return f"bad request ({type(error).__name__})\n", 400
 
     @app.server.route("/files/<run_id>/<name>")
     def run_file(run_id: str, name: str):
@@ -61,12 +125,14 @@ class AppServer:
         from werkzeug.serving import make_server
 
         self.app = create_app(store)
+        self.store = self.app.run_store
         self._server = make_server(host, port, self.app.server, threaded=True)
         self.port = self._server.server_port
         self.url = f"http://{host}:{self.port}/"
         self._thread = threading.Thread(target=self._server.serve_forever, daemon=True)
 
     def start(self) -> AppServer:
+        self.store.start()
         self._thread.start()
         return self
 
@@ -74,6 +140,7 @@ class AppServer:
         self._server.shutdown()
         self._server.server_close()
         self._thread.join(timeout=10)
+        self.store.close()
 
     def __enter__(self) -> AppServer:
         return self.start()
@@ -119,6 +186,7 @@ def serve(host: str = "127.0.0.1", port: int = 8050, open_browser: bool = False)
 
     _check_free(host, port)
     app = create_app()
+    app.run_store.start()  # the worker imports the models while the page loads
     server = make_server(host, port, app.server, threaded=True)
     url = f"http://{host}:{server.server_port}/"
     print(f"rotarykiln app: serving on {url} (Ctrl+C stops it)", flush=True)
@@ -130,3 +198,4 @@ def serve(host: str = "127.0.0.1", port: int = 8050, open_browser: bool = False)
         server.serve_forever()
     finally:
         server.server_close()
+        app.run_store.close()

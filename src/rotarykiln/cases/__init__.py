@@ -18,8 +18,9 @@ def list_builtin_cases() -> list[str]:
 
 def builtin_case_path(name: str) -> Path:
     """Path of a built-in case by name (``"demo"``, ``"retort/base"``)."""
+    names = list_builtin_cases()
     root = Path(str(resources.files(__package__)))
     path = root / f"{name}.yaml"
-    if not path.is_file():
-        raise InputError("case", name, f"a built-in case ({', '.join(list_builtin_cases())})")
+    if name not in names or not path.is_file():  # a name, never a path out of this folder
+        raise InputError("case", name, f"a built-in case ({', '.join(names)})")
     return path
