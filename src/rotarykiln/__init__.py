@@ -1,13 +1,22 @@
 """rotarykiln: a simulator of rotary kilns and rotating drums.
 
-Layers (see docs/architecture.md): ``units``/``errors`` at the bottom, ``geometry`` and
+Layers (see docs/dev/architecture.md): ``units``/``errors`` at the bottom, ``geometry`` and
 ``regimes`` for the cross-section, physics packages above them, ``kiln`` and ``studies``
 composing them, and ``case``/``cli``/``plot`` talking to people.
 """
 
+# ``import rotarykiln as rk`` then ``rk.load_case``, ``rk.run`` (rotarykiln.api).
 # Nothing heavy is imported here (numpy comes with the first model or error used): the
 # ``rotarykiln`` command sets its signal handlers a few milliseconds after Python starts.
-__all__ = ["ConvergenceError", "InputError", "OutOfRangeWarning", "__version__"]
+__all__ = [
+    "ConvergenceError",
+    "InputError",
+    "OutOfRangeWarning",
+    "Result",
+    "__version__",
+    "load_case",
+    "run",
+]
 
 
 def __getattr__(name: str):
@@ -15,6 +24,10 @@ def __getattr__(name: str):
         from rotarykiln import errors
 
         return getattr(errors, name)
+    if name in ("Result", "load_case", "run"):  # the notebook API (rotarykiln.api)
+        from rotarykiln import api
+
+        return getattr(api, name)
     if name == "__version__":
         from importlib.metadata import PackageNotFoundError, version
 

@@ -140,16 +140,9 @@ def run(args: argparse.Namespace) -> int:
 
 
 def run_case_section(case, out) -> dict:
-    """Runner for the ``transport:`` section of a case file (see rotarykiln.commands.run)."""
-    from rotarykiln.kiln.coupling import bed_profile_from_case
+    """Runner for the ``transport:`` section of a case file (see rotarykiln.commands.run): the
+    summary of :func:`rotarykiln.kiln.coupling.transport_run` and the files it writes."""
+    from rotarykiln.kiln.coupling import transport_run
 
-    profile = bed_profile_from_case(case)
-    files = _write(profile, out)
-    return {
-        "transport_model": profile.model,
-        "transport_mean_fill": profile.mean_fill,
-        "transport_holdup_kg": profile.holdup_mass,
-        "transport_mean_residence_time_min": profile.mean_residence_time / 60.0,
-        "transport_discharge_fill": profile.discharge_fill,
-        **{f"transport_{k}": v for k, v in files.items()},
-    }
+    run = transport_run(case)
+    return {**run.summary, **run.write(out)}

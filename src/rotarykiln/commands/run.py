@@ -1,7 +1,9 @@
 """``rotarykiln run CASE.yaml``: validate a case, run the models its sections ask for, write results.
 
-Section runners are looked up in :data:`RUNNERS` (section name -> "module:function"); each takes the
-validated case and the output folder and returns a dict of summary values to merge.
+Models are looked up in :data:`RUNNERS` (model name -> "module:function"); each function takes
+the validated case and returns a :class:`rotarykiln.kiln.coupling.ModelRun` (its result, its
+summary values, and how to write its files). :func:`solve_case` runs them in memory: it is the
+one code path of this command and of :func:`rotarykiln.run`.
 """
 
 from __future__ import annotations
@@ -26,15 +28,24 @@ from rotarykiln.outputs import (
 )
 from rotarykiln.report import case_summary, format_table
 
-__all__ = ["MANIFEST", "RUNNERS", "case_path", "register", "run", "run_case", "run_case_into"]
+__all__ = [
+    "MANIFEST",
+    "RUNNERS",
+    "case_path",
+    "register",
+    "run",
+    "run_case",
+    "run_case_into",
+    "solve_case",
+]
 
 
 RUNNERS: dict[str, str] = {
-    "transport": "rotarykiln.commands.bed:run_case_section",
-    "kiln": "rotarykiln.kiln.run:kiln_runner",
-    "rtd": "rotarykiln.kiln.coupling:rtd_runner",
+    "transport": "rotarykiln.kiln.coupling:transport_run",
+    "kiln": "rotarykiln.kiln.run:kiln_run",
+    "rtd": "rotarykiln.kiln.coupling:rtd_run",
 }
-"""Model name -> "module:function(case, out_dir) -> dict", run when the case asks for it
+"""Model name -> "module:function(case) -> ModelRun", run when the case asks for it
 (:func:`wants`: a ``transport:`` or ``rtd:`` section; the kiln model for a case with a heat
 source or chemistry, :attr:`rotarykiln.case.Case.has_kiln_model`)."""
 
@@ -44,6 +55,24 @@ def wants(case, model: str) -> bool:
     if model == "kiln":
         return case.has_kiln_model
     return getattr(case, model, None) is not None
+
+
+def solve_case(case) -> dict:
+    """Solve every model the validated ``case`` asks for (:data:`RUNNERS`), in memory.
+
+    Returns
+    -------
+    dict
+        Model name -> :class:`rotarykiln.kiln.coupling.ModelRun`, in the order of
+        :data:`RUNNERS` (the transport bed profile first: it feeds the kiln's fill and the
+        RTD's mean residence time).
+    """
+    runs = {}
+    for model, target in RUNNERS.items():
+        if wants(case, model):
+            module, func = target.split(":")
+            runs[model] = getattr(importlib.import_module(module), func)(case)
+    return runs
 
 
 def register(sub) -> None:
@@ -91,12 +120,10 @@ def run_case(
     with recorder as caught, figures:
         summary = case_summary(case)
         sections = {"case": dict(summary)}
-        for section, target in RUNNERS.items():
-            if wants(case, section):
-                module, func = target.split(":")
-                result = getattr(importlib.import_module(module), func)(case, out) or {}
-                sections[section] = _relocate(result, out, final)
-                summary.update(sections[section])
+        for model, solved in solve_case(case).items():
+            result = {**solved.summary, **(solved.write(out) or {})}
+            sections[model] = _relocate(result, out, final)
+            summary.update(sections[model])
         write_json_atomic(out / "summary.json", summary)
         write_text_atomic(out / "summary.txt", format_table(summary) + "\n")
         if plots and case.bed is not None and case.bed.mean_fill is not None:

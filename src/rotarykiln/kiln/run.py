@@ -1,7 +1,8 @@
 """Run the kiln model of a validated case file (``rotarykiln run``, sweeps).
 
 :func:`run_kiln_case` builds (:func:`rotarykiln.kiln.build.kiln_from_case`) and solves the
-kiln of a :class:`rotarykiln.case.Case`; :func:`kiln_runner` is the ``rotarykiln run`` runner
+kiln of a :class:`rotarykiln.case.Case`; :func:`kiln_run` solves it as ``rotarykiln run`` does
+(in memory) and :func:`kiln_runner` writes that run's files
 (``kiln_profiles.csv``, ``kiln_summary.json``, ``kiln_profiles.png``, and for a reacting bed the
 residence-time effects with ``kiln_rtd.png``).
 """
@@ -11,10 +12,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.coupling import ModelRun
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_kiln
 
-__all__ = ["kiln_runner", "run_kiln_case"]
+__all__ = ["kiln_run", "kiln_runner", "run_kiln_case"]
 
 
 def run_kiln_case(case, n_cells: int | None = None) -> KilnSolution:
@@ -37,29 +39,53 @@ def run_kiln_case(case, n_cells: int | None = None) -> KilnSolution:
     return solve_kiln(kiln, n_cells or cells)
 
 
-def kiln_runner(case, out: Path) -> dict:
-    """``rotarykiln run`` runner: solve, write profiles, summary and figures, return the summary.
+def kiln_run(case) -> ModelRun:
+    """The kiln model of a validated case, solved in memory (``rotarykiln run`` and
+    :func:`rotarykiln.run` both go through it).
 
     A bed that reacts also gets the residence-time effects
     (:func:`rotarykiln.kiln.residence.residence_time_effects`: the segregated-flow conversion
-    over the RTD) in its summary and ``kiln_rtd.png``.
+    over the RTD) in its summary and its files (``kiln_rtd.png``), and as
+    ``extra["residence"]``.
+
+    Returns
+    -------
+    rotarykiln.kiln.coupling.ModelRun
+        ``value``: the :class:`~rotarykiln.kiln.solution.KilnSolution`; ``summary``: its
+        summary with every key prefixed ``kiln_``; ``write(out)``: ``kiln_profiles.csv``,
+        ``kiln_summary.json``, ``kiln_profiles.png`` (and ``kiln_rtd.png``).
     """
-    from rotarykiln.kiln.run_files import write_solution_files
+    from rotarykiln.kiln.residence import fed_reactant, residence_time_effects
 
     kiln, cells = kiln_from_case(case)
     sol = solve_kiln(kiln, cells)
-    out = Path(out)
-    from rotarykiln.kiln.residence import fed_reactant, residence_time_effects
+    # nothing fed reacts: no residence-time effect to show
+    rtd = None if fed_reactant(kiln) is None else residence_time_effects(case, kiln, sol)
+    extra = rtd.summary() if rtd is not None else {}
+    summary = {f"kiln_{k}": v for k, v in sol.summary().items() if k != "name"}
+    summary.update({f"kiln_{k}": v for k, v in extra.items()})
 
-    if fed_reactant(kiln) is None:  # nothing fed reacts: no residence-time effect to show
-        return write_solution_files(sol, out, "kiln", dpi=110)
-    import matplotlib.pyplot as plt
+    def write(out) -> dict:
+        from rotarykiln.kiln.run_files import write_solution_files
 
-    from rotarykiln.outputs import save_figure_atomic
+        out = Path(out)
+        if rtd is None:
+            return write_solution_files(sol, out, "kiln", dpi=110)
+        import matplotlib.pyplot as plt
 
-    rtd = residence_time_effects(case, kiln, sol)
-    summary = write_solution_files(sol, out, "kiln", extra=rtd.summary(), dpi=100)
-    fig = rtd.plot()
-    save_figure_atomic(out / "kiln_rtd.png", fig, dpi=100)
-    plt.close(fig)
-    return summary
+        from rotarykiln.outputs import save_figure_atomic
+
+        written = write_solution_files(sol, out, "kiln", extra=extra, dpi=100)
+        fig = rtd.plot()
+        save_figure_atomic(out / "kiln_rtd.png", fig, dpi=100)
+        plt.close(fig)
+        return written
+
+    return ModelRun("kiln", sol, summary, write, extra={"residence": rtd})
+
+
+def kiln_runner(case, out: Path) -> dict:
+    """``rotarykiln run`` runner: solve (:func:`kiln_run`), write profiles, summary and
+    figures to ``out``, return the summary."""
+    run = kiln_run(case)
+    return {**run.summary, **run.write(Path(out))}

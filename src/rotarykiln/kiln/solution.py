@@ -69,6 +69,16 @@ class KilnSolution:
     fill_profile: np.ndarray | None = field(repr=False, default=None)
     exhaust: dict = field(repr=False, default_factory=dict)
 
+    def __repr__(self) -> str:
+        """One line: the case, the grid, the outlet temperatures and the balances (the profiles
+        are in :meth:`to_frame`, every scalar in :meth:`summary`)."""
+        return (
+            f"<KilnSolution {self.name!r}: {len(self.z)} cells, bed "
+            f"{self.t_bed_nodes[0]:.1f} -> {self.bed_outlet_temperature:.1f} K, gas out "
+            f"{self.gas_outlet_temperature:.1f} K, heat to solids {self.heat_to_solids:.4g} W, "
+            f"energy closure {self.energy_closure:.2g}, {self.iterations} Newton iterations>"
+        )
+
     @property
     def t_shell(self) -> np.ndarray | None:
         """Outer shell temperature (K, cells) of a lined wall; None for the constant-U wall."""
