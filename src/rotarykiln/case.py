@@ -453,7 +453,13 @@ class Closures(Section):
     (:class:`rotarykiln.kiln.model.Closures`: Tscheng & Watkinson convection, Li 2005 covered
     wall, radiation on, Johansson 2011 gas emissivity, the solid's given conductivity) or
     ``seed004`` (Gorog 1982 gas-bed and gas-wall, Tscheng & Watkinson covered wall: the
-    closures of seed 004's reacting kilns); a key given overrides the preset's choice."""
+    closures of Ahmad's (2006) reacting kilns); a key given overrides the preset's choice.
+    ``radiation_model``: ``grey`` (one grey gas) or ``banded`` (every WSGG grey gas in the
+    freeboard exchange); ``near_bed_mixing`` (W/(m2 K)): a layered freeboard, the bed seeing a
+    near-bed gas fed from the core through this coefficient; ``bed_radiation``: radiation
+    between particles in the bed conductivity; ``exposed_bed_penetration``: a penetration
+    resistance at the exposed bed surface (see docs/validation.md, Barr, for what each does on
+    the fired pilot kiln)."""
 
     preset: Literal["default", "seed004"] = "default"
     gas_wall: str | None = None
@@ -465,6 +471,10 @@ class Closures(Section):
     convection_factor: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = (
         None
     )
+    radiation_model: Literal["grey", "banded"] | None = None
+    near_bed_mixing: HeatTransferCoefficient | None = None
+    bed_radiation: bool | None = None
+    exposed_bed_penetration: bool | None = None
 
 
 class Thermocouple(Section):

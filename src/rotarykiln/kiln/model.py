@@ -110,7 +110,7 @@ class Closures:
         'gorog1982'
         """
         base = SEED004_CLOSURES if getattr(section, "preset", "default") == "seed004" else cls()
-        given = {f.name: getattr(section, f.name, None) for f in fields(cls)}
+        given = {f.name: getattr(section, f.name) for f in fields(cls)}
         return dataclasses.replace(base, **{k: v for k, v in given.items() if v is not None})
 
 
