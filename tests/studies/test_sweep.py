@@ -157,3 +157,151 @@ def test_oat_rows_show_base_values_for_unswept_parameters():
     assert df.loc[1, "reaction.rate_constant"] == "0.01 1/s"  # base value
     assert df.loc[2, "operation.residence_time"] == "100 s"
     assert df.loc[2, "conversion"] == pytest.approx(1 - np.exp(-2.0))
+
+
+def kiln_like(case: dict) -> dict:
+    """A stand-in with a kiln's output names, some repeating others, from a speed in rpm."""
+    from rotarykiln.units import to_si
+
+    speed = to_si("operation.speed", case["operation"]["speed"], "rotation rate")
+    feed = to_si("operation.feed", case["operation"]["feed"], "mass flow")
+    t = 60.0 / speed / (1.0 + 50.0 * feed)
+    return {
+        "bed_outlet_temperature_K": 900.0 + 0.01 * t,
+        "bed_max_temperature_K": 900.0 + 0.01 * t,  # the same column under another name
+        "gas_outlet_temperature_K": 700.0 - 0.005 * t,
+        "newton_iterations": 4,
+        "residence_time_s": t,
+        "fill": 0.1 * t / 600.0,
+        "burn_off_percent": 100.0 * (1.0 - math.exp(-t / 3000.0)),
+        "conversion_C": 1.0 - math.exp(-t / 3000.0),
+        "energy_shell_loss_W": 1000.0 + t,
+    }
+
+
+KILN = {"operation": {"speed": "2 rpm", "feed": "62 kg/h"}}
+
+
+def test_plot_has_one_panel_per_output_with_the_parameter_as_typed():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    design = grid(
+        {"operation.speed": ["1 rpm", "2 rpm", "4 rpm"], "operation.feed": ["40 kg/h", "90 kg/h"]}
+    )
+    res = run_sweep(kiln_like, KILN, design, executor="serial")
+    keys = res.key_outputs()
+    assert keys == [
+        "bed_outlet_temperature_K",
+        "gas_outlet_temperature_K",
+        "residence_time_s",
+        "fill",
+        "burn_off_percent",
+    ]
+    fig = res.plot()
+    assert len(fig.axes) == len(keys)  # one panel per output, the feed as lines
+    labels = {ax.get_ylabel() for ax in fig.axes}
+    assert len(labels) == len(keys)  # no output drawn twice
+    for ax in fig.axes:
+        assert ax.get_xlabel() == "operation.speed (rpm)"
+        assert len(ax.lines) == 2  # one line per feed
+        assert list(ax.lines[0].get_xdata()) == [1.0, 2.0, 4.0]  # rpm, not rad/s
+    plt.close(fig)
+    fig = res.plot(outputs=["fill", "energy_shell_loss_W"])
+    assert len(fig.axes) == 2
+    plt.close(fig)
+    with pytest.raises(InputError, match="did you mean fill"):
+        res.plot(outputs=["fil"])
+
+
+def test_key_outputs_of_another_model_leave_out_repeats_and_bookkeeping():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def repeats(case):
+        out = first_order_conversion(case)
+        out["conversion_again"] = out["conversion"]
+        out["newton_iterations"] = 3
+        return out
+
+    design = grid({"operation.residence_time": ["1 min", "2 min", "5 min"]})
+    res = run_sweep(repeats, BASE, design, executor="serial")
+    assert res.key_outputs() == ["conversion", "damkohler"]
+    fig = res.plot()
+    assert len(fig.axes) == 2
+    assert fig.axes[0].get_xlabel() == "operation.residence_time (min)"
+    assert list(fig.axes[0].lines[0].get_xdata()) == [1.0, 2.0, 5.0]
+    plt.close(fig)
+
+
+def test_table_in_typed_units_fits_the_width():
+    design = grid(
+        {
+            "operation.speed": ["1 rpm", "1.5 rpm", "3 rpm"],
+            "operation.feed": ["40 kg/h", "0.025 kg/s"],
+        }
+    )
+    res = run_sweep(kiln_like, KILN, design, executor="serial")
+    table = res.table()
+    assert list(table.columns) == [
+        "case_id",
+        "operation.speed [rpm]",
+        "operation.feed [kg/h]",
+        *res.key_outputs(),
+    ]
+    assert list(table["operation.speed [rpm]"]) == [1.0, 1.0, 1.5, 1.5, 3.0, 3.0]
+    assert list(table["operation.feed [kg/h]"]) == pytest.approx([40.0, 90.0] * 3)
+    for width in (80, 100):
+        text = res.format_table(width=width)
+        assert all(len(line) <= width for line in text.splitlines())
+        for name in res.key_outputs():  # every chosen output is shown, wrapped or in a block
+            head = name.split("_")[0]
+            assert head in text
+    assert "bed_max" not in res.format_table(width=100)
+    wide = res.format_table(width=100).splitlines()
+    assert len(wide) == 3 + 6  # three header lines, one line per case: no second block
+
+
+def test_sampled_design_plots_each_parameter_without_a_legend_per_sample():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from rotarykiln.studies.design import latin_hypercube
+
+    design = latin_hypercube(
+        ["operation.speed=uniform(1 rpm, 4 rpm)", "operation.feed=uniform(40 kg/h, 90 kg/h)"], 12
+    )
+    res = run_sweep(kiln_like, KILN, design, executor="serial")
+    fig = res.plot(outputs=["residence_time_s"])
+    assert len(fig.axes) == 2  # the output against each parameter
+    assert [ax.get_xlabel() for ax in fig.axes] == [
+        "operation.speed (rpm)",
+        "operation.feed (kg/h)",
+    ]
+    speeds = fig.axes[0].lines[0].get_xdata()
+    assert len(speeds) == 12 and 1.0 <= min(speeds) and max(speeds) <= 4.0
+    assert not fig.legends and all(ax.get_legend() is None for ax in fig.axes)
+    plt.close(fig)
+
+
+def test_one_at_a_time_shows_each_parameter_in_the_unit_of_its_design_values():
+    design = one_at_a_time(
+        {"operation.residence_time": ["1 min", "5 min"], "reaction.rate_constant": ["0.6 1/min"]}
+    )
+    res = run_sweep(first_order_conversion, BASE, design, executor="serial")  # base: 100 s
+    assert res.parameter_units() == {
+        "operation.residence_time": "min",
+        "reaction.rate_constant": "1/min",
+    }
+    table = res.table(["conversion"])
+    assert list(table["operation.residence_time [min]"]) == pytest.approx(
+        [100 / 60, 1, 5, 100 / 60]
+    )
+    assert list(table["reaction.rate_constant [1/min]"]) == pytest.approx([0.6, 0.6, 0.6, 0.6])
+    assert list(table.columns)[-1] == "conversion"

@@ -6,20 +6,29 @@ scalars. Values keep their units as in a case file. Designs: ``--grid`` (full fa
 ``--oat`` (one at a time), or ``--lhs N`` / ``--sobol N`` / ``--mc N`` samples of the
 ``--param PATH=DIST(ARGS)`` distributions (uniform, normal, lognormal, triangular).
 
+The table printed shows the chosen outputs (``--output NAME``, repeatable; by default a few
+key ones: outlet temperatures, residence time, fill, and the burn-off or conversion of a reacting
+bed or else the thermal efficiency), each parameter in the unit it was typed in; OUT/NAME.csv
+holds every output (values as given and in SI), OUT/NAME.png one panel per chosen output.
+
 Rows are appended to the Parquet dataset ``--store`` (default OUT/runs) as they arrive; run the
 same command again to resume: only the cases not yet stored run. The exit code is 1 when any
 case failed (its error is in the table).
 
-Example::
+Examples::
 
-    rotarykiln sweep --case charcoal_activation \\
-        --model rotarykiln.studies.examples:ortiz_isothermal_burn_off \\
-        --oat bed.residence_time="3000 s,6480 s,10000 s" \\
-        --oat gas.steam_flow="0.0025 kg/s,0.005 kg/s" --out results
+    rotarykiln sweep --case charcoal_activation_kramers --model kiln \\
+        --grid "operation.speed=1 rpm,2 rpm,4 rpm" \\
+        --grid "transport.dam_height=2 cm,4 cm,6 cm" --out speed/
 
-    rotarykiln sweep --case tscheng_A16 --model kiln --lhs 200 \\
-        --param "operation.speed=uniform(1 rpm, 3 rpm)" \\
-        --param "gas.temperature=normal(535 K, 10 K)" --out lhs/
+    rotarykiln sweep --case barr_T4 --model kiln \\
+        --grid "burner.fuel_flow=1.5 L/s,1.97 L/s,2.5 L/s" \\
+        --grid "operation.feed=40 kg/h,62 kg/h,90 kg/h" \\
+        --output bed_outlet_temperature_K --output thermal_efficiency --out firing/
+
+    rotarykiln sweep --case barr_T4 --model kiln --lhs 50 \\
+        --param "burner.fuel_flow=uniform(1.5 L/s, 2.5 L/s)" \\
+        --param "operation.feed=normal(62 kg/h, 5 kg/h)" --out lhs/
 """
 
 from __future__ import annotations
@@ -27,6 +36,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import re
+import shutil
 import sys
 from pathlib import Path
 
@@ -83,6 +93,14 @@ def register(sub) -> None:
     ):
         p.add_argument(f"--{kind}", type=int, metavar="N", help=f"{what} of N cases over --param")
     add_study_options(p)
+    p.add_argument(
+        "--output",
+        action="append",
+        default=[],
+        metavar="NAME",
+        help="an output printed and plotted (repeatable; default: a few key outputs of the "
+        "model); the files hold every output",
+    )
     p.add_argument("--name", default="sweep", help="base name of the output files")
     p.add_argument("--json", action="store_true", help="print the table as JSON records")
     p.add_argument("--out", help="write NAME.csv (NAME.parquet if pyarrow) and NAME.png here")
@@ -241,9 +259,9 @@ def _load_case(spec: str) -> dict:
     path = Path(spec)
     if not path.is_file():
         path = builtin_case_path(spec)
-    from rotarykiln.case import read_case_yaml
+    from rotarykiln.case import read_case_data
 
-    data = read_case_yaml(path)  # one line for a bad file: unreadable, not UTF-8, too large...
+    data = read_case_data(path)  # one line for a bad file: unreadable, not UTF-8, too large...
     if not isinstance(data, dict):
         raise InputError("--case", spec, "a YAML mapping")
     return data
@@ -285,30 +303,33 @@ def run(args) -> int:
     check_design_values(base, design, option, args.model)
     folder = out_dir(args.out, "results") if args.out else None
     res = run_sweep(func, base, design, **runner_options(args, folder))
+    try:
+        chosen = res.check_outputs(args.output, "--output") if res.outputs else []
+    except InputError as exc:
+        if res.meta.get("store"):  # rerunning with the right name costs nothing
+            raise InputError(
+                "--output",
+                message=f"{exc} (the {len(res.frame)} cases are stored: run the "
+                f"same command with one of these names, nothing is computed again)",
+            ) from None
+        raise
     if folder is not None:
         res.write(folder, name=args.name)
-        if res.outputs and len(res.failed) < len(res.frame):
-            res.save_plot(folder / f"{args.name}.png")
+        if chosen and len(res.failed) < len(res.frame):
+            res.save_plot(folder / f"{args.name}.png", outputs=chosen)
     if args.json:
         print_json(res.frame.to_dict(orient="records"))
     else:
-        cols = [
-            c
-            for c in res.frame.columns
-            if not c.endswith(" [SI]") and c not in ("elapsed_s", "hash", "warnings")
-        ]
-        table = res.frame[cols]
-        if len(table) > 40:  # a large study: the head and the tail; the files hold everything
-            print(table.head(20).to_string(index=False))
-            print(f"... {len(table) - 25} more rows (all in the CSV/Parquet files) ...")
-            print(table.tail(5).to_string(index=False, header=False))
-        else:
-            print(table.to_string(index=False))
+        if chosen:
+            width = shutil.get_terminal_size((100, 24)).columns
+            print(res.format_table(chosen, width=max(60, width)))
         print(
             f"{len(res.frame)} cases ({res.meta.get('ran', len(res.frame))} run now, "
             f"{res.meta.get('reused', 0)} from the store), {res.n_failed} failed, "
             f"{res.wall_time:.2f} s ({res.executor})"
         )
+        if folder is not None:
+            print(f"every output in {folder / args.name}.csv")
     report_warnings(res, "sweep")
     if res.n_failed:
         print(

@@ -36,6 +36,8 @@ __all__ = [
     "parse_param",
     "si_value",
     "sobol_sequence",
+    "typed_unit",
+    "in_unit",
 ]
 
 
@@ -178,6 +180,72 @@ _SIGNATURE = {
     "lognormal": "lognormal(median, sigma) with median > 0 and sigma > 0 (sd of ln x, -)",
     "triangular": "triangular(low, mode, high) with low <= mode <= high and low < high",
 }
+
+
+def _split_quantity(value: Any) -> tuple[float, str] | None:
+    """``"1.5 rpm"`` -> ``(1.5, "rpm")``, ``3`` -> ``(3.0, "")``; None for a label."""
+    if isinstance(value, bool):
+        return float(value), ""
+    if isinstance(value, int | float):
+        return float(value), ""
+    if isinstance(value, str):
+        m = _NUMBER.match(value)
+        if m is not None:
+            return float(m.group(1)), m.group(2)
+    return None
+
+
+def typed_unit(values) -> str:
+    """The unit a parameter was typed in: that of its first value with a unit.
+
+    ``""`` when every value is a bare number or a label. Sampled designs write their values in
+    the unit of the distribution's first argument (:meth:`Param.value`), so the unit typed in
+    ``--param`` comes back here.
+
+    Examples
+    --------
+    >>> typed_unit(["1 rpm", "3 rpm"]), typed_unit([0.1, "12 Nm3/h"]), typed_unit([1, 2])
+    ('rpm', 'Nm3/h', '')
+    """
+    for v in values:
+        q = _split_quantity(v)
+        if q is not None and q[1]:
+            return q[1]
+    return ""
+
+
+def in_unit(value: Any, unit: str) -> float:
+    """Magnitude of a sweep value in ``unit`` (the unit the parameter was typed in).
+
+    A value typed in ``unit`` keeps its number as typed (``"12 Nm3/h"``, ``"3 %"``); one in
+    another unit is converted (``"0.02 kg/s"`` -> 72 for ``kg/h``); a bare number is read as
+    SI, as in a case file. NaN for a label or a unit that does not convert.
+
+    Examples
+    --------
+    >>> in_unit("2 rpm", "rpm"), round(in_unit("0.02 kg/s", "kg/h"), 6), in_unit(5, "")
+    (2.0, 72.0, 5.0)
+    >>> round(in_unit("1373.15 K", "degC"), 6), math.isnan(in_unit("steam", "kg/s"))
+    (1100.0, True)
+    """
+    q = _split_quantity(value)
+    if q is None:
+        return math.nan
+    number, u = q
+    if u == unit:
+        return number
+    if not unit:
+        return si_value(value)
+    from rotarykiln.units import ureg
+
+    try:
+        target = ureg.Unit(unit)
+        if u:
+            return float(ureg.Quantity(number, u).to(target).magnitude)
+        base = ureg.Quantity(1.0, target).to_base_units().units  # a bare number is SI
+        return float(ureg.Quantity(number, base).to(target).magnitude)
+    except Exception:  # not a pint unit (Nm3/h) or another dimension
+        return math.nan
 
 
 @dataclass(frozen=True)

@@ -52,17 +52,17 @@ def first_order_conversion(case: dict) -> dict:
 
 
 def ortiz_isothermal_burn_off(case: dict) -> dict:
-    r"""Burn-off of seed 004's charcoal case for an isothermal reaction zone (no heat balance).
+    r"""Burn-off of Ahmad's (2006) charcoal case for an isothermal reaction zone (no heat balance).
 
     .. math:: \mathrm{BO} = 100\,[1 - \exp(-K_e e^{-8033/T} Q_a\, t_r\, f_r)],\quad
               \mathrm{production} = 100 - \mathrm{BO}
 
     with :math:`t_r f_r` the time spent in the reaction zone (a fraction ``f_r`` of the residence
-    time, seed 004: from 2.5 m to 3.7 m, f_r = 1.2/3.7). Fields (the built-in case's):
+    time, Ahmad 2006: from 2.5 m to 3.7 m, f_r = 1.2/3.7). Fields (the built-in case's):
     ``bed.residence_time``, ``gas.steam_flow``; stand-in settings (optional,
     top-level ``standin`` mapping): ``reaction_zone_temperature`` (default 1150 K) and
-    ``reaction_zone_fraction``. A stand-in for the kiln model; it shows the directions of seed
-    004 Figs. 5.1 and 5.4 only (no heat balance: no effect of gas or solid flow).
+    ``reaction_zone_fraction``. A stand-in for the kiln model; it shows the directions of Ahmad's
+    (2006) Figs. 5.1 and 5.4 only (no heat balance: no effect of gas or solid flow).
     """
     t = to_si("bed.residence_time", case["bed"]["residence_time"], "time")
     qa = to_si("gas.steam_flow", case["gas"]["steam_flow"], "mass flow")
