@@ -4,7 +4,7 @@ in its structure, or its text damaged: a line deleted or repeated, a character i
 cut short) is either read or refused with one InputError line, never another exception, and the
 refusal is fast and in words.
 
-The bases: ``examples/barr_T4_startup.yaml`` (events, checked against the barr_T4 kiln), the
+The bases: ``rotarykiln/examples/barr_T4_startup.yaml`` (events, checked against the barr_T4 kiln), the
 built-in species table ``chemistry/species.yaml`` as a user species file (its species renamed,
 plus a NASA-7 and a polynomial c_p species), and the built-in reaction files
 ``chemistry/reactions/*.yaml``.
@@ -29,7 +29,7 @@ import yaml
 from rotarykiln.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[1]
-EVENTS_FILE = ROOT / "examples" / "barr_T4_startup.yaml"
+EVENTS_FILE = ROOT / "src" / "rotarykiln" / "examples" / "barr_T4_startup.yaml"
 CHEMISTRY = ROOT / "src" / "rotarykiln" / "chemistry"
 EVENTS_UNTIL = 36_000.0  # s: the example's run (10 h)
 KINDS = ("events", "species", "reactions")

@@ -25,7 +25,11 @@ def register(sub) -> None:
         '--events startup.yaml --until "10 h" --out barr-startup',
     )
     p.add_argument("case", help="case file (YAML) or the name of a built-in case")
-    p.add_argument("--events", help="transient file (YAML): start, events, tracer, wall")
+    p.add_argument(
+        "--events",
+        help="transient file (YAML): start, events, tracer, wall; or the name of a shipped "
+        "example (barr_T4_startup)",
+    )
     p.add_argument("--until", required=True, help='end of the run, e.g. "10 h"')
     p.add_argument("--out", help="output folder (default: <case name>-transient)")
     p.add_argument("--cells", type=int, help="cells along the kiln (default: the case's)")
@@ -51,7 +55,12 @@ def run(args) -> int:
     until = check_quantity("--until", args.until, Time)
     if args.cells is not None:
         check_quantity("--cells", args.cells, Cells)
-    data = read_transient_file(args.events) if args.events else {}
+    if args.events:
+        from rotarykiln.examples import example_path
+
+        data = read_transient_file(example_path("--events", args.events))
+    else:
+        data = {}
     case = load_case(case_path(args.case))
     kiln, cells = kiln_from_case(case)
     if args.cells is not None:
