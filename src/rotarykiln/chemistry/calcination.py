@@ -60,7 +60,7 @@ def baker_co2_equilibrium_pressure(T):
     """
     T = np.asarray(T, dtype=float)
     check_positive("calcination.T", T, "K")
-    warn_out_of_range("T", T, 700.0, 1500.0, "Baker (1962)")
+    warn_out_of_range("T [K]", T, 700.0, 1500.0, "Baker (1962)")
     p = ATM * 10.0 ** (_BAKER_A - _BAKER_B / T)
     return p if p.ndim else float(p)
 

@@ -228,7 +228,7 @@ def water_boiling_temperature(pressure, latent_heat=LATENT_HEAT_AHMAD):
     check_positive("drying.pressure", pressure, "Pa")
     check_positive("drying.latent_heat", latent_heat, "J/kg")
     p = np.asarray(pressure, dtype=float)
-    warn_out_of_range("drying.pressure", p, 2.0e4, 5.0e5, "Clausius-Clapeyron, constant H_v")
+    warn_out_of_range("drying.pressure [Pa]", p, 2.0e4, 5.0e5, "Clausius-Clapeyron, constant H_v")
     inv = 1.0 / T_BOIL_ATM - _R * np.log(p / P_ATM) / (_M_WATER * latent_heat)
     t = 1.0 / inv
     return t if t.ndim else float(t)

@@ -94,7 +94,7 @@ def wen_yen_rate_constants(T):
     """
     T = np.asarray(T, dtype=float)
     check_positive("pyrolysis.T", T, "K")
-    warn_out_of_range("T", T, 650.0, 800.0, "Wen & Yen (1977) / Carrasco & Banga (1997)")
+    warn_out_of_range("T [K]", T, 650.0, 800.0, "Wen & Yen (1977) / Carrasco & Banga (1997)")
     return _wen_yen_k(T)
 
 

@@ -123,7 +123,7 @@ def smith_wsgg_emissivity(temperature, pressure_path_length, case="pw/pc=2", *, 
     if check:
         check_positive("temperature", T, "K")
         check_nonnegative("pressure_path_length", pl, "atm m")
-        warn_out_of_range("T", span(T), 600.0, 2400.0, "Smith et al. (1982) WSGG")
+        warn_out_of_range("T [K]", span(T), 600.0, 2400.0, "Smith et al. (1982) WSGG")
     eps = np.zeros(np.broadcast(T, pl).shape)
     for kappa, b1, b2, b3, b4 in _SMITH[case]:
         a = b1 * 1e-1 + b2 * 1e-4 * T + b3 * 1e-7 * T**2 + b4 * 1e-11 * T**3
@@ -197,7 +197,7 @@ def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=T
         check_nonnegative("p_co2", pc)
         if np.any(ptot > 0):
             warn_out_of_range("MR", span(mr_raw[...]), 0.125, 2.0, "Johansson et al. (2011) WSGG")
-            warn_out_of_range("T", span(T), 500.0, 2500.0, "Johansson et al. (2011) WSGG")
+            warn_out_of_range("T [K]", span(T), 500.0, 2500.0, "Johansson et al. (2011) WSGG")
     mr = np.clip(mr_raw, 0.125, 2.0)
     tr = T / 1200.0
     pl = ptot * np.asarray(path_length, dtype=float)
