@@ -370,6 +370,7 @@ def test_half_angle_out_of_range_says_degrees(angle, capsys):
 def test_out_folder_checked_writable_before_solving(tmp_path, monkeypatch, capsys):
     from rotarykiln import cli, outputs
 
+    (tmp_path / "out").mkdir()  # an existing folder (a missing one is created at the commit)
     monkeypatch.setattr(outputs.os, "access", lambda path, mode: False)  # a read-only folder
     code = cli.main(["run", "tscheng_A16", "--out", str(tmp_path / "out")])
     err = capsys.readouterr().err

@@ -85,3 +85,30 @@ def test_tables_are_written_with_their_units_and_version(tmp_path):
     assert (
         "kiln_profiles_units.json" in json.loads((tmp_path / "run_files.json").read_text())["files"]
     )
+
+
+def test_writes_never_touch_the_process_umask(tmp_path, monkeypatch):
+    """Issue 21: os.umask(0) then back is process-wide, racy in the threaded app server (a file
+    another thread creates meanwhile gets mode 0666). The writers create their files with mode
+    0666 and let the kernel apply the umask; the folders of a run set likewise."""
+    from rotarykiln import outputs
+
+    mask = os.umask(0o027)  # a umask other than the usual 022: the modes must follow it
+    try:
+
+        def forbidden(*args):
+            raise AssertionError("os.umask called during a write")
+
+        monkeypatch.setattr(os, "umask", forbidden)
+        write_text_atomic(tmp_path / "a.txt", "hello")
+        write_frame_atomic(tmp_path / "c.csv", pd.DataFrame({"a": [1.0]}))
+        with outputs.output_set(tmp_path / "fresh") as staging:  # a fresh folder, committed
+            write_json_atomic(staging / "s.json", {"x": 1})
+        with outputs.output_set(tmp_path / "fresh") as staging:  # an existing one
+            write_json_atomic(staging / "t.json", {"x": 2})
+    finally:
+        monkeypatch.undo()
+        os.umask(mask)
+    for name in ("a.txt", "c.csv", "fresh/t.json", "fresh/run_files.json"):
+        assert stat.S_IMODE(os.stat(tmp_path / name).st_mode) == 0o640, name
+    assert stat.S_IMODE(os.stat(tmp_path / "fresh").st_mode) == 0o750

@@ -1,4 +1,4 @@
-"""The outputs' conventions (docs/architecture.md, "Outputs"): every result table carries its
+"""The outputs' conventions (docs/dev/architecture.md, "Outputs"): every result table carries its
 units, the package version and the model in ``DataFrame.attrs``; every ``plot()`` returns a
 matplotlib Figure; progress bars never reach the ``--json`` output."""
 

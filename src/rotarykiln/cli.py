@@ -13,7 +13,13 @@ exits with code 1. Warnings print as one ``warning:`` line each.
 
 from __future__ import annotations
 
-from rotarykiln.commands._signals import handled, install_early, interruption, signal_exit
+from rotarykiln.commands._signals import (
+    end_program,
+    handled,
+    install_early,
+    interruption,
+    signal_exit,
+)
 
 install_early()  # the program: SIGINT/SIGTERM print one line from here on, not a traceback
 
@@ -110,20 +116,23 @@ def main(argv: list[str] | None = None) -> int:
     # traceback of the interpreter's shutdown; called in-process, the caller's handlers return
     with handled(at_exit_ignore=argv is None) as received:
         try:
-            return _main(argv)
+            code = _main(argv)
         except BaseException as exc:
             stop = interruption(received, exc)
             if stop is None:
                 raise
             code, text = signal_exit(stop)
             print(f"rotarykiln: {text}", file=sys.stderr)
-            return code
+    if argv is None:  # the program: exit handlers, flushed output, no slow interpreter teardown
+        end_program(code)  # a signal up to here is answered by its line and 130 / 143
+    return code
 
 
 def _main(argv: list[str] | None) -> int:
     parser = build_parser(command_of(argv))
     args = parser.parse_args(argv)  # --version and --help exit here, before any numerical import
     from rotarykiln.errors import ConvergenceError, InputError
+
     if not getattr(args, "func", None):
         parser.print_help()
         return 2

@@ -5,7 +5,7 @@ target, so an interrupted run never leaves a truncated result behind.
 
 :func:`output_set` goes one step further for a whole run (``rotarykiln run``): the run writes into a
 staging folder, and only a complete set of files is moved into the output folder, replacing the
-files of the previous run there (named in its manifest ``run_files.json``); see docs/hardening.md
+files of the previous run there (named in its manifest ``run_files.json``); see docs/dev/hardening.md
 for the exact guarantee under SIGINT, SIGTERM and SIGKILL.
 """
 
@@ -13,9 +13,11 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
+import errno
 import hashlib
 import json
 import os
+import secrets
 import shutil
 import signal
 import tempfile
@@ -33,6 +35,7 @@ from rotarykiln.errors import InputError
 __all__ = [
     "MANIFEST",
     "atomic_path",
+    "figures_wanted",
     "output_set",
     "prepare_output_folder",
     "save_figure_atomic",
@@ -49,26 +52,34 @@ def atomic_path(path: str | os.PathLike, writer: Callable[[Path], None]) -> Path
         raise InputError(str(path), message=f"{path}: is a folder, expected a file name")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent)
+        tmp = _new_file(path.parent, f".{path.name}.", path.suffix)
     except OSError as exc:  # a user's path that cannot be written: one line, not a traceback
         raise InputError(
             str(path), message=f"{path}: cannot write there ({exc.strerror or exc})"
         ) from None
-    os.close(fd)
     try:
-        writer(Path(tmp))
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600 files; give the usual mode
+        writer(tmp)
         os.replace(tmp, path)
     except BaseException:
-        Path(tmp).unlink(missing_ok=True)
+        tmp.unlink(missing_ok=True)
         raise
     return path
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
+def _new_file(folder: Path, prefix: str, suffix: str) -> Path:
+    """Create a new empty file of a random name in ``folder`` (``O_EXCL``), of mode 0o666 less
+    the umask, applied by the kernel: the usual mode of a new file, without reading the umask
+    (``os.umask`` is process-wide: changing it, even to read it, races the other threads of
+    the app server)."""
+    for _ in range(100):
+        tmp = folder / f"{prefix}{secrets.token_hex(4)}{suffix}"
+        try:
+            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_CLOEXEC, 0o666)
+        except FileExistsError:
+            continue
+        os.close(fd)
+        return tmp
+    raise FileExistsError(errno.EEXIST, "no free temporary name", str(folder))
 
 
 def write_text_atomic(path: str | os.PathLike, text: str) -> Path:
@@ -135,6 +146,11 @@ def no_figures():
         _FIGURES.reset(token)
 
 
+def figures_wanted() -> bool:
+    """False inside :func:`no_figures`: a caller skips drawing a figure nobody will see."""
+    return _FIGURES.get()
+
+
 def save_figure_atomic(path: str | os.PathLike, fig, **savefig_kwargs) -> Path | None:
     """Save a matplotlib figure atomically; the format follows the suffix of ``path``.
 
@@ -178,10 +194,25 @@ def _folder_key(folder: Path) -> str:
     return hashlib.sha1(str(folder).encode("utf-8", "surrogateescape")).hexdigest()[:12]
 
 
+def _existing_ancestor(folder: Path) -> tuple[Path, list[Path]]:
+    """The nearest ancestor of ``folder`` (itself included) that exists, and the missing folders
+    from it down to ``folder`` (top first)."""
+    missing = []
+    q = folder
+    while not os.path.lexists(q) and q.parent != q:
+        missing.append(q)
+        q = q.parent
+    return q, missing[::-1]
+
+
 def _staging_base(folder: Path) -> Path:
     """Where the staging folders of ``folder`` live: beside it (same file system, so a rename
     moves a file in atomically, and a SIGKILL leaves nothing inside ``folder``), or inside it when
-    its parent cannot be written or lies on another file system (``folder`` is a mount point)."""
+    its parent cannot be written or lies on another file system (``folder`` is a mount point).
+    A ``folder`` that does not exist yet: in its nearest existing ancestor (the folder is
+    created by the commit, by renaming the staged files into place)."""
+    if not folder.exists():
+        return _existing_ancestor(folder)[0]
     parent = folder.parent
     if parent == folder:
         return folder
@@ -298,35 +329,84 @@ def _recover(folder: Path, base: Path) -> None:
             os.close(fd)
 
 
-def prepare_output_folder(path: str | os.PathLike, field: str = "--out") -> Path:
-    """Create the output folder ``path`` if needed and check, before any model runs, that a run
-    can write there; complete or remove what runs killed earlier left (:func:`output_set`).
-
-    Writes no file inside the folder. Raises :class:`InputError` naming ``field`` otherwise.
-    """
-    p = Path(path)
+def _probe_creation(p: Path, field: str) -> None:
+    """Check that the missing folder ``p`` can be created (its missing parents too) by creating
+    and removing it at once: a fresh output folder appears only with the files of its run."""
+    top, missing = _existing_ancestor(p.absolute())
+    if not top.is_dir():
+        raise InputError(
+            field, str(p), message=f"{field}: cannot create {p} ({top} is not a folder)"
+        )
+    made = []
     try:
-        if p.exists() and not p.is_dir():
-            raise InputError(field, str(p), message=f"{field}: {p} is a file, not a folder")
-        p.mkdir(parents=True, exist_ok=True)
+        for q in missing:
+            os.mkdir(q)
+            made.append(q)
     except OSError as exc:
         raise InputError(
             field, str(p), message=f"{field}: cannot create {p} ({exc.strerror})"
         ) from None
-    if not os.access(p, os.W_OK | os.X_OK):
+    finally:
+        for q in reversed(made):
+            with contextlib.suppress(OSError):  # (filled meanwhile by another run's commit)
+                os.rmdir(q)
+
+
+def prepare_output_folder(path: str | os.PathLike, field: str = "--out") -> Path:
+    """Check, before any model runs, that a run can write its set into the output folder
+    ``path``; complete or remove what runs killed earlier left (:func:`output_set`).
+
+    An existing folder must be writable; a missing one must be creatable (it is not created
+    here: :func:`output_set` creates it with its files, at the commit, so that a run killed
+    before leaves no empty folder behind). Writes no file inside the folder. Raises
+    :class:`InputError` naming ``field`` otherwise.
+    """
+    p = Path(path)
+    try:
+        exists = p.exists()
+    except OSError as exc:  # a name too long, ...
+        raise InputError(
+            field, str(p), message=f"{field}: cannot create {p} ({exc.strerror})"
+        ) from None
+    if exists and not p.is_dir():
+        raise InputError(field, str(p), message=f"{field}: {p} is a file, not a folder")
+    if not exists:
+        _probe_creation(p, field)
+    elif not os.access(p, os.W_OK | os.X_OK):
         raise InputError(
             field, str(p), message=f"{field}: cannot write in {p} (no write permission)"
         )
     folder = p.resolve()
     base = _staging_base(folder)
     try:
-        with _locked(folder):
+        with _locked(folder if folder.is_dir() else base):
             _recover(folder, base)
     except OSError as exc:
         raise InputError(
             field, str(p), message=f"{field}: cannot use {p} ({exc.strerror})"
         ) from None
     return p
+
+
+def _commit_fresh(staging: Path, names: list[str], folder: Path) -> bool:
+    """Commit into a ``folder`` that does not exist: the staged files folder, manifest
+    included, is renamed into place (one atomic rename: the folder appears whole, or not at
+    all). False, with nothing changed, if ``folder`` exists by now (the caller then merges the
+    set into it). Called with the lock of the staging base held."""
+    if folder.exists():
+        return False
+    files = staging / _FILES
+    write_json_atomic(files / MANIFEST, {"files": names})
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    with _signals_deferred():
+        try:
+            os.rename(files, folder)  # the commit point
+        except OSError:
+            if folder.exists():  # created meanwhile (not empty): merge instead
+                return False
+            raise
+        shutil.rmtree(staging, ignore_errors=True)
+    return True
 
 
 @contextlib.contextmanager
@@ -345,7 +425,9 @@ def output_set(path: str | os.PathLike, field: str = "--out"):
     one. A SIGKILL (which nothing can hold) in those few renames leaves the journal, and the next
     :func:`prepare_output_folder` of the folder completes the commit first. The staging folder
     lives beside ``path`` (``.rotarykiln-staging-*``), inside it only when its parent cannot be
-    written; one left by a SIGKILL is removed by the next run into ``path``.
+    written; one left by a SIGKILL is removed by the next run into ``path``. A ``path`` that does
+    not exist is created by the commit itself, the staged folder renamed into place (its missing
+    parents are created then too): a run stopped before its commit leaves no folder behind.
     """
     p = prepare_output_folder(path, field)
     folder = p.resolve()
@@ -355,7 +437,7 @@ def output_set(path: str | os.PathLike, field: str = "--out"):
     committing = False
     try:
         try:
-            with _locked(folder):
+            with _locked(folder if folder.is_dir() else base):
                 staging = Path(
                     tempfile.mkdtemp(
                         prefix=f"{_STAGING}{_folder_key(folder)}-{os.getpid()}-", dir=base
@@ -374,6 +456,12 @@ def output_set(path: str | os.PathLike, field: str = "--out"):
             for q in files.iterdir()
             if q.is_file() and q.name[0] != "." and q.name != MANIFEST
         )
+        if not folder.exists():
+            with _locked(base):
+                committing = _commit_fresh(staging, names, folder)
+            if committing:  # the folder appeared with the whole set in it
+                committing = False
+                return
         with _locked(folder):
             _recover(folder, base)  # an older commit cut by SIGKILL meanwhile goes in first
             previous = _manifest_names(folder)

@@ -36,7 +36,8 @@ def exhaust_state(res, flows, temperature: float) -> tuple[dict, float]:
     -------
     (dict, float)
         ``temperature_K``, ``flow_kg_s``, ``O2_dry_mole_fraction`` (of the exhaust after the
-        ingress; NaN without O2 or dry gas), ``air_ingress_kg_s``; and the sensible enthalpy
+        ingress; 0 without O2; None, with the reason in ``O2_dry_note``, when the exhaust holds
+        no dry gas: never NaN), ``air_ingress_kg_s``; and the sensible enthalpy
         of the ingress air above 298.15 K, W (an input of the energy sheet).
     """
     flows = np.maximum(np.asarray(flows, dtype=float), 0.0)
@@ -64,14 +65,16 @@ def exhaust_state(res, flows, temperature: float) -> tuple[dict, float]:
     total = flows + q_air
     mm = np.array([res.species[n].molar_mass for n in names])
     moles = total / mm
-    dry = moles.sum() - (moles[names.index("H2O")] if "H2O" in names else 0.0)
-    o2 = moles[names.index("O2")] / dry if "O2" in names and dry > 0 else float("nan")
-    return {
-        "temperature_K": t_mix,
-        "flow_kg_s": float(total.sum()),
-        "O2_dry_mole_fraction": float(o2),
-        "air_ingress_kg_s": float(q_air.sum()),
-    }, h_in
+    dry = float(moles.sum() - (moles[names.index("H2O")] if "H2O" in names else 0.0))
+    state = {"temperature_K": t_mix, "flow_kg_s": float(total.sum())}
+    if dry > 0.0:  # a dry gas without O2 holds none of it: 0, not undefined
+        o2 = moles[names.index("O2")] if "O2" in names else 0.0
+        state["O2_dry_mole_fraction"] = float(o2 / dry)
+    else:  # nothing but water vapour (or no gas): a dry fraction has no meaning
+        state["O2_dry_mole_fraction"] = None
+        state["O2_dry_note"] = "undefined: the exhaust holds no dry gas"
+    state["air_ingress_kg_s"] = float(q_air.sum())
+    return state, h_in
 
 
 def energy_sheet(

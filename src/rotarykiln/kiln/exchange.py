@@ -495,25 +495,29 @@ def gas_conductance(co: dict, geometry, t_max, radiation_scale=1.0):
 
 
 def upwind_weight(ntu):
-    r"""Weight :math:`\theta` of a cell's outlet face in its mean temperature.
+    r"""Weight :math:`\theta` of a cell's outlet face in its mean temperature,
+    :math:`\bar T = (1-\theta) T_{in} + \theta T_{out}`, for a cell of ``ntu`` transfer units.
 
-    The exact mean of a stream exchanging with surroundings at a fixed temperature over
-    ``ntu`` transfer units, :math:`\bar T = (1-\theta) T_{in} + \theta T_{out}` with
-    :math:`\theta = 1/(1 - e^{-N}) - 1/N`: 1/2 (the face average, second order) for a cell of
-    few transfer units, tending to 1 (the outlet) for many. With it a face is never driven
-    beyond the temperature it exchanges with, for any cell size: the plain average of the
-    faces overshoots it (and oscillates cell to cell) once a cell holds more than 2 transfer
-    units (a large drum swept by a little gas).
+    A stream exchanging with surroundings at :math:`T_\infty` leaves a cell at
+    :math:`T_{out} - T_{in} = N (T_\infty - T_{in}) / (1 + N\theta)`: it never overshoots
+    :math:`T_\infty` when :math:`N(1-\theta) \le 1`. The face average (:math:`\theta = 1/2`,
+    second order) holds that up to 2 transfer units per cell and is kept exactly up to 1; from 2
+    on, the weight is the exact one of an exponential approach,
+    :math:`\theta_e = 1/(1 - e^{-N}) - 1/N` (tending to the outlet face: bounded for any cell
+    size), joined smoothly (a cubic step) between 1 and 2. Without it a cell of many transfer
+    units (a large drum swept by a little gas) lets its outlet face overshoot the wall and bed it
+    exchanges with, and the faces oscillate from cell to cell.
 
     Examples
     --------
-    >>> [round(float(upwind_weight(n)), 4) for n in (0.0, 0.1, 2.0, 50.0)]
-    [0.5, 0.5083, 0.6565, 0.98]
+    >>> [round(float(upwind_weight(n)), 4) for n in (0.0, 1.0, 2.0, 50.0)]
+    [0.5, 0.5, 0.6565, 0.98]
     """
     n = np.maximum(np.asarray(ntu, dtype=float), 0.0)
-    small = n < 1e-4
-    safe = np.where(small, 1.0, n)
-    return np.where(small, 0.5 + n / 12.0, -1.0 / np.expm1(-safe) - 1.0 / safe)
+    safe = np.maximum(n, 1.0)
+    exact = -1.0 / np.expm1(-safe) - 1.0 / safe
+    t = np.clip(n - 1.0, 0.0, 1.0)
+    return 0.5 + (exact - 0.5) * t * t * (3.0 - 2.0 * t)
 
 
 def cell_report(t_bed, t_gas, flows: dict, q_loss, coefficients: dict, **sources) -> dict:

@@ -7,6 +7,10 @@ reacting bed species at face j+1 and of the reacting gas species at the gas outl
 phase's total inlet flow (for bed reactants that are fed and never produced, the square root
 of that ratio). Species that no reaction touches keep their inlet flow.
 
+The cell-mean temperatures the closures see are the averages of the faces, the gas's weighted
+towards its outlet face by the cell's transfer units (:meth:`KilnResidual.gas_mean`), so that a
+cell of many transfer units (a large drum swept by little gas) cannot overshoot.
+
 Balances of cell j (:math:`\Delta z`), with rates :math:`\dot w_i` (kg/(s m)) and heat
 absorbed :math:`\dot q_r = \sum_r r_r \Delta H_r(T_b)` (W/m) from
 :meth:`rotarykiln.chemistry.Mechanism.rates` at the cell-mean temperatures and the cell's outlet
@@ -44,7 +48,14 @@ import numpy as np
 from rotarykiln.chemistry.mechanism import CellState as ChemState
 from rotarykiln.kiln.discretisation import cell_grid
 from rotarykiln.kiln.dispersion import dispersion_sources
-from rotarykiln.kiln.exchange import FLOW_KEYS, BulkBed, CrossSectionExchange, cell_report
+from rotarykiln.kiln.exchange import (
+    FLOW_KEYS,
+    BulkBed,
+    CrossSectionExchange,
+    cell_report,
+    gas_conductance,
+    upwind_weight,
+)
 from rotarykiln.kiln.gas_mixture import MixtureGas
 from rotarykiln.kiln.model import Kiln
 from rotarykiln.kiln.thermo_gas import mixture_of
@@ -311,17 +322,18 @@ class KilnResidual:
         tbn = np.maximum(tb_n, T_FLOOR)
         tgn = np.maximum(tg_n, T_FLOOR)
         tb = 0.5 * (tbn[..., :-1] + tbn[..., 1:])
-        tg = 0.5 * (tgn[..., :-1] + tgn[..., 1:])
-        if self.stirred is not None:
-            # a stirred cell is a tank: its gas is at the temperature it leaves at, not the
-            # mean of its faces (its inlet face may be the burner's products, unmixed)
-            tg = np.where(self.stirred_cells, np.maximum(x[..., 1], T_FLOOR), tg)
         tl = np.maximum(x[..., 2 : 2 + self.n_wall], T_FLOOR)  # inner wall (.. shell)
         tw = tl[..., 0]
         g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
         geo = self.geometry(x)
         gas = self.gas_state(g_mean, geo)
-        fl, co = self.exchange_of(geo).flows(gas, tg, tb, tw, self.radiation_scale)
+        exchange = self.exchange_of(geo)
+        tg, co = self.gas_mean(tgn, tb, tw, g_mean, gas, exchange, geo)
+        if self.stirred is not None:
+            # a stirred cell is a tank: its gas is at the temperature it leaves at, not the
+            # mean of its faces (its inlet face may be the burner's products, unmixed)
+            tg = np.where(self.stirred_cells, np.maximum(x[..., 1], T_FLOOR), tg)
+        fl, co = exchange.flows(gas, tg, tb, tw, self.radiation_scale, co=co)
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
@@ -397,6 +409,28 @@ class KilnResidual:
         fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
         # production by the bed reactions (the solver's global balance prices it at T_bed)
         return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)
+
+    def gas_mean(self, tgn, tb, tw, g_mean, gas, exchange, geo):
+        """Cell-mean gas temperatures (K) from the face ones, and the exchange coefficients.
+
+        The faces weighted by :func:`~rotarykiln.kiln.exchange.upwind_weight` of the cell's
+        transfer units (conductance to wall and bed over the gas's heat capacity flow): the
+        face average in an ordinary cell (up to 1 transfer unit), towards the outlet face in a
+        cell of many transfer units, where the average would let the outlet overshoot the wall
+        and bed it exchanges with and oscillate cell to cell. The coefficients are taken at the
+        face average.
+        """
+        t_in, t_out = (tgn[..., 1:], tgn[..., :-1])
+        if not self.kiln.counter_current:
+            t_in, t_out = t_out, t_in
+        t_avg = 0.5 * (t_in + t_out)
+        co = exchange.coefficients(gas, t_avg, tb, tw)
+        t_max = np.maximum(np.maximum(t_in, t_out), np.maximum(tw, tb))
+        conductance = gas_conductance(co, geo, t_max, self.radiation_scale)
+        capacity = g_mean.sum(-1) * gas.cp(t_avg)
+        ntu = conductance * self.dz / np.maximum(capacity, 1e-300)
+        theta = upwind_weight(ntu)
+        return np.where(theta == 0.5, t_avg, t_in + theta * (t_out - t_in)), co
 
     def _stirred_gain(self, t_gas):
         r"""Heat (W) each cell's gas gains by the axial mixing of a stirred recirculation zone.

@@ -13,15 +13,22 @@ def write_solution_files(solution, out, prefix: str, *, extra: dict | None = Non
     The summary is ``solution.summary()`` (without the name) and ``extra``, every key prefixed
     with ``<prefix>_``; returned as a dict. Files are written atomically into ``out``.
     """
-    import matplotlib.pyplot as plt
-
-    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
+    from rotarykiln.outputs import (
+        figures_wanted,
+        save_figure_atomic,
+        write_frame_atomic,
+        write_json_atomic,
+    )
 
     out = Path(out)
     write_frame_atomic(out / f"{prefix}_profiles.csv", solution.to_frame(), index=False)
     summary = {f"{prefix}_{k}": v for k, v in solution.summary().items() if k != "name"}
     summary.update({f"{prefix}_{k}": v for k, v in (extra or {}).items()})
     write_json_atomic(out / f"{prefix}_summary.json", summary)
+    if not figures_wanted():  # --no-plots: matplotlib is not even imported
+        return summary
+    import matplotlib.pyplot as plt
+
     drawn = solution.plot()
     fig = getattr(drawn, "figure", drawn)  # an Axes or a Figure
     save_figure_atomic(out / f"{prefix}_profiles.png", fig, dpi=dpi)

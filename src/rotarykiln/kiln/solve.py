@@ -13,7 +13,7 @@ from rotarykiln.kiln.model import Kiln
 from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.solution import KilnSolution
 
-__all__ = ["solve_kiln", "ENERGY_RTOL"]
+__all__ = ["solve_kiln", "ENERGY_RTOL", "zigzag"]
 
 #: Energy closure demanded of every reacting solve (issue 7).
 ENERGY_RTOL = 1e-6
@@ -171,6 +171,8 @@ def solve_kiln(
         {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
     )
     _check_no_hotter_than_sources(res, tb_n, tg_n, x[:, 2:i0], total)
+    _check_within_partners(res, tb_n, tg_n, x[:, 2:i0], total)
+    _check_no_oscillation(res, {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2]}, total)
     # validity ranges of the heat-transfer closures, checked once on the converged state
     g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
     geo = res.geometry(x)
@@ -298,6 +300,119 @@ def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterati
                 f"unphysical solution: {name} reaches {float(arr.max()):.6g} K, above every "
                 f"heat source ({bound - 1.0:.6g} K), near z = {res.z_nodes[min(flat, res.n)]:.4g} m;"
                 " refine the grid (cells)",
+                iterations=iterations,
+            )
+
+
+def _temperature_tolerance(*arrays) -> float:
+    """Slack of the bound checks, K: 1 K plus 0.1 % of the hottest temperature (the cells'
+    means and faces are not exactly what the closures saw)."""
+    hottest = max(float(np.max(a)) for a in arrays if np.size(a))
+    return 1.0 + 1e-3 * hottest
+
+
+def _check_within_partners(res: KilnResidual, tb_n, tg_n, t_wall, iterations) -> None:
+    """Refuse a phase hotter (colder) than everything it exchanges heat with (ConvergenceError).
+
+    Heat flows from hot to cold: a phase without a heat source of its own cannot become hotter
+    than the hottest temperature it exchanges with anywhere in the kiln, nor colder than the
+    coldest. The gas exchanges with the wall and the bed, takes the bed's volatiles at the bed
+    temperature, and enters at its inlet (air ingress at ambient); the wall (lining, shell,
+    jacket gas) with the gas, the bed, the ambient, a jacket's inlet and heater set-points; the
+    bed with the gas, the wall and its feed. Sources that lift the bound: heat released in the
+    gas (a flame) or gas-phase reactions for the gas, heaters of given power for the wall,
+    exothermic bed reactions for the bed (and endothermic ones below). This check holds with
+    exothermic chemistry, where the bound on the hottest source does not apply: a gas hotter
+    than both the wall and the bed it lies between is never physics.
+    """
+    k = res.kiln
+    reactions = list(k.mechanism.reactions)
+    gas_sources = k.heat_release > 0 or any(r.phase == "gas" for r in reactions)
+    bed_exo = any(r.phase != "gas" and r.heat < 0 for r in reactions)
+    bed_endo = any(r.phase != "gas" and r.heat > 0 for r in reactions)
+    powered = any(z.power is not None for z in k.heaters)
+    jacket = getattr(k, "jacket", None)
+    outside = [k.ambient_temperature, *(z.shell_temperature for z in k.heaters)]
+    outside = [t for t in outside if t is not None]
+    if jacket is not None:
+        outside.append(float(jacket.inlet_temperature))
+    t_wall = np.asarray(t_wall).reshape(res.n, -1)
+    inner = t_wall[:, 0]
+    gas_in = [k.gas_inlet_temperature, k.ambient_temperature]
+    checks = []  # (name, values, partners' hottest, coldest, check hot, check cold)
+    partners = [np.asarray(gas_in), inner, tb_n]
+    if not gas_sources:
+        checks.append(("T_gas", tg_n, partners, True, True))
+    checks.append(("T_wall", t_wall, [tg_n, tb_n, np.asarray(outside)], not powered, True))
+    bed_partners = [np.asarray([k.feed_temperature]), tg_n, inner]
+    checks.append(("T_bed", tb_n, bed_partners, not bed_exo, not bed_endo))
+    tol = _temperature_tolerance(tb_n, tg_n, t_wall)
+    for name, values, around, hot, cold in checks:
+        values = np.asarray(values, dtype=float)
+        top = max(float(np.max(a)) for a in around)
+        low = min(float(np.min(a)) for a in around)
+        per_cell = values.reshape(values.shape[0], -1)
+        for check, worst, beyond, word, bound in (
+            (hot, per_cell.max(-1), lambda v, b=top: v > b + tol, "hotter", top),
+            (cold, per_cell.min(-1), lambda v, b=low: v < b - tol, "colder", low),
+        ):
+            if not check or not np.any(beyond(worst)):
+                continue
+            j = int(np.argmax(worst) if word == "hotter" else np.argmin(worst))
+            z = res.z_nodes[j] if values.shape[0] == res.n + 1 else res.z[j]
+            raise ConvergenceError(
+                f"unphysical solution (bound check): {name} reaches {float(worst[j]):.6g} K at "
+                f"z = {z:.4g} m, {word} than everything it exchanges heat with "
+                f"({bound:.6g} K); refine the grid (solver.cells)",
+                iterations=iterations,
+            )
+
+
+#: A profile zigzagging cell to cell (each difference against the sign of the previous one,
+#: each larger than the amplitude) over this many successive nodes is a failed solve.
+ZIGZAG_NODES = 4
+#: Amplitude of a zigzag: at least this many K and this share of the profile's span. Below it
+#: a ripple is tolerated: a stiff equilibrium reaction that pins the bed's cell means (pure
+#: CaCO3 under pure CO2 at 1,175 K) leaves its faces rippling by a few K around them.
+ZIGZAG_AMPLITUDE = 2.0
+ZIGZAG_SPAN_SHARE = 0.02
+
+
+def zigzag(values, amplitude: float) -> tuple[int, int]:
+    """Longest run of successive interior nodes where a profile turns back (the differences on
+    either side of opposite signs, both larger than ``amplitude``): (length, first node).
+
+    Examples
+    --------
+    >>> zigzag([1.0, 9.0, 2.0, 8.0, 3.0, 7.0, 7.5, 8.0], 1.0)
+    (4, 1)
+    >>> zigzag([1.0, 2.0, 3.0, 2.5, 2.0], 1.0)
+    (0, 0)
+    """
+    d = np.diff(np.asarray(values, dtype=float))
+    turn = (d[:-1] * d[1:] < 0.0) & (np.abs(d[:-1]) > amplitude) & (np.abs(d[1:]) > amplitude)
+    best, start, run = 0, 0, 0
+    for i, t in enumerate(turn):
+        run = run + 1 if t else 0
+        if run > best:
+            best, start = run, i - run + 2
+    return best, start
+
+
+def _check_no_oscillation(res: KilnResidual, profiles: dict, iterations) -> None:
+    """Refuse a profile that oscillates from cell to cell (ConvergenceError): a sign of a grid
+    too coarse for the exchange it resolves (e.g. a cell of more transfer units than the scheme
+    bounds), never of physics; the message names the profile, the cells and z."""
+    for name, values in profiles.items():
+        values = np.asarray(values, dtype=float)
+        amplitude = max(ZIGZAG_AMPLITUDE, ZIGZAG_SPAN_SHARE * float(np.ptp(values)))
+        length, first = zigzag(values, amplitude)
+        if length >= ZIGZAG_NODES:
+            z = res.z_nodes if values.size == res.n + 1 else res.z
+            raise ConvergenceError(
+                f"unphysical solution (oscillation check): {name} zigzags cell to cell over "
+                f"{length} nodes from z = {z[first]:.4g} m (amplitude above {amplitude:.3g} K); "
+                "refine the grid (solver.cells)",
                 iterations=iterations,
             )
 

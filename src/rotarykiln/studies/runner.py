@@ -127,8 +127,64 @@ def model_id(func: Callable) -> str:
 
 
 # --- executors: each yields worker rows as they arrive ------------------------------------------
-def _ignore_sigint() -> None:  # workers leave Ctrl-C to the parent, which saves and stops them
+#: Seconds between two looks of a worker at its parent (the portable watch, :func:`_watch_parent`).
+PARENT_WATCH_S = 0.5
+_PR_SET_PDEATHSIG = 1  # linux/prctl.h
+
+
+def _die_with_parent(parent: int) -> None:
+    """Make this worker process end when the process ``parent`` (the sweep) does, however it
+    ends (SIGKILL included, which leaves no chance to stop the pool): on Linux the kernel's
+    parent-death signal (``prctl(PR_SET_PDEATHSIG, SIGKILL)``, when the sweep forked the worker
+    itself); everywhere a daemon thread that exits the worker once the sweep is gone or the
+    worker has been re-parented (to init or a subreaper)."""
+    ppid = os.getppid()
+    if ppid == parent and sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0)
+        except (OSError, AttributeError):  # no libc prctl: the watch below still holds
+            pass
+    if os.getppid() != ppid or not _alive(parent):  # died before the signal was armed
+        os._exit(1)
+    import threading
+
+    threading.Thread(
+        target=_watch_parent, args=(parent, ppid), name="rotarykiln-parent-watch", daemon=True
+    ).start()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # exists, not ours
+        return True
+    return True
+
+
+def _watch_parent(parent: int, ppid: int) -> None:
+    while True:
+        time.sleep(PARENT_WATCH_S)
+        if os.getppid() != ppid or not _alive(parent):
+            os._exit(1)
+
+
+def _worker_init(parent: int) -> None:
+    """Pool initializer: Ctrl-C is left to the parent (which saves and stops the workers), and
+    the worker dies with its parent (no orphan keeps computing or idling when the sweep is
+    killed)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _die_with_parent(parent)
+
+
+def _pool(workers: int) -> ProcessPoolExecutor:
+    return ProcessPoolExecutor(
+        max_workers=workers, initializer=_worker_init, initargs=(os.getpid(),)
+    )
 
 
 def _serial_rows(func, base, chunks, create) -> Iterator[dict]:
@@ -143,7 +199,7 @@ def _isolated_rows(func, base, chunks, create) -> Iterator[dict]:
     try:
         for ch in chunks:
             if pool is None:
-                pool = ProcessPoolExecutor(max_workers=1, initializer=_ignore_sigint)
+                pool = _pool(1)
             try:
                 rows = pool.submit(_run_chunk, func, base, ch, create).result()
             except BrokenProcessPool as exc:
@@ -177,7 +233,7 @@ def _process_rows(func, base, chunks, create, workers, max_retries=2) -> Iterato
             yield from _isolated_rows(func, base, suspects, create)
         if not pending:
             break
-        pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+        pool = _pool(workers)
         try:
             futures = {
                 pool.submit(_run_chunk, func, base, ch, create): (ch, a) for ch, a in pending
