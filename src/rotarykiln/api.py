@@ -95,7 +95,10 @@ def run(case: str | Path | Case, overrides: Mapping[str, Any] | None = None) -> 
     code path of the command: the transport bed profile (a ``transport:`` section, which then
     sets the kiln's fill), the kiln model (a heat source or chemistry) with the residence-time
     effects of a reacting bed, the RTD (an ``rtd:`` section), and the scores at the measured
-    points. The warnings raised are shown as usual and kept in :attr:`Result.warnings`.
+    points. The warnings raised are kept in :attr:`Result.warnings` (one per closure of the kiln
+    used outside its validated range, then any other, once each) and shown once each as the
+    caller's warning filters say (``warnings.simplefilter("ignore")`` hides them, not from the
+    result).
 
     Parameters
     ----------
@@ -121,13 +124,15 @@ def run(case: str | Path | Case, overrides: Mapping[str, Any] | None = None) -> 
 
     case = load_case(case, overrides)
     with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")  # every one kept, whatever the caller shows
         runs = solve_case(case)
-    for w in caught:  # kept for the result; shown as they would have been
-        warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+    kept = {str(w.message): w for w in caught}  # once per text, in order
+    for w in kept.values():  # shown (or not, or raised) as the caller's filters say
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     summary = case_summary(case)
     for solved in runs.values():
         summary.update(solved.summary)
-    texts = tuple(dict.fromkeys(str(w.message) for w in caught))
+    texts = tuple(kept)
     return Result(case=case, runs=runs, summary=summary, warnings=texts)
 
 
@@ -146,7 +151,9 @@ class Result:
         aside): the case's geometry and regime, then each model's values (``transport_*``,
         ``kiln_*``, ``rtd_*``).
     warnings : tuple of str
-        The texts of the warnings raised during the run, each once.
+        The texts of the warnings raised during the run, each once: one per closure of the
+        kiln used outside its validated range (naming the heat flow it feeds, its share of the
+        heat to the solids and the other choices; :attr:`closure_warnings`), then any other.
     """
 
     case: Case
@@ -187,6 +194,15 @@ class Result:
         (plug against segregated flow over the RTD; None otherwise)."""
         run = self.runs.get("kiln")
         return None if run is None else run.extra.get("residence")
+
+    @property
+    def closure_warnings(self) -> tuple:
+        """The kiln's closures used outside their validated range, one
+        :class:`~rotarykiln.kiln.closure_warnings.ClosureWarning` each (its text is in
+        :attr:`warnings`; its ``field``, ``alternatives``, ``share`` of the heat to the solids,
+        ``short`` line as attributes); empty without the kiln model or such a closure."""
+        run = self.runs.get("kiln")
+        return () if run is None else tuple(run.extra.get("closure_warnings", ()))
 
     @property
     def scores(self) -> dict:
@@ -308,11 +324,14 @@ class Result:
             shown = ", ".join(f"{_PROFILES.get(k, k)} {v:.1f} K" for k, v in self.scores.items())
             lines.append(("measured, RMSE", shown))
         n = len(self.warnings)
-        if n:
-            first = self.warnings[0]
-            first = first if len(first) <= 90 else first[:87] + "..."
-            more = f" (and {n - 1} more: .warnings)" if n > 1 else ""
-            lines.append(("warnings", f"{n}: {first}{more}"))
+        closures = self.closure_warnings
+        for w in closures:  # one line each: the closure, what is outside, its share
+            lines.append(("closure warning", w.short))
+        if n > len(closures):
+            others = [t for t in self.warnings if t not in {str(w) for w in closures}]
+            first = others[0] if len(others[0]) <= 90 else others[0][:87] + "..."
+            more = f" (and {len(others) - 1} more: .warnings)" if len(others) > 1 else ""
+            lines.append(("warnings", f"{len(others)}: {first}{more}"))
         return lines
 
     def __repr__(self) -> str:

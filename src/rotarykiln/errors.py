@@ -78,7 +78,36 @@ class ConvergenceError(RuntimeError):
 
 
 class OutOfRangeWarning(UserWarning):
-    """A model or correlation is used outside the range its source validated."""
+    """A model or correlation is used outside the range its source validated.
+
+    Raised by :func:`warn_out_of_range`, which also sets what a run needs to tell the user more
+    than the text (all None when not known): ``quantity`` (the name checked, with its unit in
+    brackets, ``"d_p [um]"``), ``outside`` (the smallest and largest value outside the range),
+    ``low`` and ``high`` (the range), ``source`` (author and year), ``closure`` (the closure
+    that checked it, ``"covered_wall.li2005"``: see :mod:`rotarykiln.kiln.closure_warnings`)
+    and ``mask`` (where the values checked were outside: a boolean array of their shape, None
+    for a single value).
+    """
+
+    def __init__(
+        self,
+        *args: Any,
+        quantity: str | None = None,
+        outside: tuple[float, float] | None = None,
+        low: float | None = None,
+        high: float | None = None,
+        source: str | None = None,
+        closure: str | None = None,
+        mask: np.ndarray | None = None,
+    ):
+        super().__init__(*args)
+        self.mask = mask
+        self.quantity = quantity
+        self.outside = outside
+        self.low = low
+        self.high = high
+        self.source = source
+        self.closure = closure
 
 
 def _missing(accepted: str) -> str:
@@ -169,25 +198,43 @@ def check_range(
         raise InputError(field, f"{_fmt(float(v))}{' ' + unit if unit else ''}", interval)
 
 
-def warn_out_of_range(what: str, value: Any, low: float, high: float, source: str) -> bool:
+def warn_out_of_range(
+    what: str,
+    value: Any,
+    low: float,
+    high: float,
+    source: str,
+    *,
+    closure: str | None = None,
+) -> bool:
     """Warn with :class:`OutOfRangeWarning` if any of ``value`` lies outside [low, high].
 
-    Returns True when a warning was issued.
+    ``closure`` (optional): the closure checking it (``"covered_wall.li2005"``, the case-file
+    field under ``closures:`` and its value), kept on the warning with the range and the values
+    outside it (and where: pass the values of every cell, not their span), for a kiln run to say
+    which heat flow the closure feeds
+    (:mod:`rotarykiln.kiln.closure_warnings`). Returns True when a warning was issued.
     """
     arr = np.asarray(value, dtype=float)
     if np.any((arr < low) | (arr > high)):
+        mask = (arr < low) | (arr > high)
+        outside = arr[mask]
+        lo, hi = float(outside.min()), float(outside.max())
         if arr.ndim and arr.size > 1:
-            outside = arr[(arr < low) | (arr > high)]
-            shown = (
-                f"{_fmt(float(outside.min()))}"
-                if outside.min() == outside.max()
-                else f"{_fmt(float(outside.min()))} to {_fmt(float(outside.max()))}"
-            )
+            shown = f"{_fmt(lo)}" if lo == hi else f"{_fmt(lo)} to {_fmt(hi)}"
         else:
             shown = _fmt(float(arr.ravel()[0]) if arr.ndim else float(arr))
         warnings.warn(
-            f"{what} = {shown} is outside the range [{low:g}, {high:g}] validated by {source}",
-            OutOfRangeWarning,
+            OutOfRangeWarning(
+                f"{what} = {shown} is outside the range [{low:g}, {high:g}] validated by {source}",
+                quantity=what,
+                outside=(lo, hi),
+                low=float(low),
+                high=float(high),
+                source=source,
+                closure=closure,
+                mask=mask if arr.ndim else None,
+            ),
             stacklevel=3,
         )
         return True

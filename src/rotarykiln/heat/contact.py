@@ -14,7 +14,6 @@ from __future__ import annotations
 import numpy as np
 
 from rotarykiln.errors import check_nonnegative, check_positive, warn_out_of_range
-from rotarykiln.heat._util import span
 
 __all__ = [
     "li_film_thickness",
@@ -51,7 +50,14 @@ def li_film_thickness(particle_diameter, *, check=True):
     dp_um = np.asarray(particle_diameter, dtype=float) * 1e6
     if check:
         check_positive("particle_diameter", particle_diameter, "m")
-        warn_out_of_range("d_p [um]", span(dp_um), 157.5, 1038.0, "Li et al. (2005) chi fit")
+        warn_out_of_range(
+            "d_p [um]",
+            dp_um,
+            157.5,
+            1038.0,
+            "Li et al. (2005) chi fit",
+            closure="covered_wall.li2005",
+        )
     return 0.095 + 0.205 * np.exp(-0.0045 * dp_um)
 
 

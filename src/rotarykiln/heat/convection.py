@@ -17,7 +17,6 @@ from __future__ import annotations
 import numpy as np
 
 from rotarykiln.errors import check_nonnegative, check_positive, check_range, warn_out_of_range
-from rotarykiln.heat._util import span
 
 __all__ = [
     "tscheng_watkinson_gas_wall_nusselt",
@@ -107,12 +106,12 @@ def rotational_reynolds(density, omega, hydraulic_diameter, viscosity, *, check=
     )
 
 
-def _check_tw(reynolds, rot_reynolds, check):
+def _check_tw(reynolds, rot_reynolds, check, closure):
     if check:
         check_positive("reynolds", reynolds)
         check_positive("rotational_reynolds", rot_reynolds)
-        warn_out_of_range("Re", span(reynolds), 1600.0, 7800.0, _TW_SOURCE)
-        warn_out_of_range("Re_omega", span(rot_reynolds), 20.0, 800.0, _TW_SOURCE)
+        warn_out_of_range("Re", reynolds, 1600.0, 7800.0, _TW_SOURCE, closure=closure)
+        warn_out_of_range("Re_omega", rot_reynolds, 20.0, 800.0, _TW_SOURCE, closure=closure)
 
 
 def tscheng_watkinson_gas_wall_nusselt(reynolds, rot_reynolds, *, check=True):
@@ -147,7 +146,7 @@ def tscheng_watkinson_gas_wall_nusselt(reynolds, rot_reynolds, *, check=True):
     S.H. Tscheng, A.P. Watkinson, Can. J. Chem. Eng. 57 (1979) 433-443; re-quoted as eqs. 8-9
     of Li et al. (2005) and implemented in SimCem (kiln.hpp).
     """
-    _check_tw(reynolds, rot_reynolds, check)
+    _check_tw(reynolds, rot_reynolds, check, "gas_wall.tscheng1979")
     return 1.54 * np.asarray(reynolds) ** 0.575 * np.asarray(rot_reynolds) ** -0.292
 
 
@@ -181,7 +180,7 @@ def tscheng_watkinson_gas_bed_nusselt(reynolds, rot_reynolds, fill, *, check=Tru
     ----------
     S.H. Tscheng, A.P. Watkinson, Can. J. Chem. Eng. 57 (1979) 433-443.
     """
-    _check_tw(reynolds, rot_reynolds, check)
+    _check_tw(reynolds, rot_reynolds, check, "gas_bed.tscheng1979")
     if check:
         check_range("fill", fill, 0.0, 1.0)
     return (
@@ -233,7 +232,14 @@ def gorog_gas_wall_h(conductivity, hydraulic_diameter, reynolds, prandtl, length
         check_positive("hydraulic_diameter", hydraulic_diameter, "m")
         check_positive("reynolds", reynolds)
         check_positive("prandtl", prandtl)
-        warn_out_of_range("Re", span(reynolds), 1.0e4, 1.0e6, "Gorog et al. (1982) pipe-flow form")
+        warn_out_of_range(
+            "Re",
+            reynolds,
+            1.0e4,
+            1.0e6,
+            "Gorog et al. (1982) pipe-flow form",
+            closure="gas_wall.gorog1982",
+        )
     return (
         0.036
         * np.asarray(conductivity)

@@ -31,7 +31,6 @@ from rotarykiln.errors import (
     check_range,
     warn_out_of_range,
 )
-from rotarykiln.heat._util import span
 
 __all__ = [
     "combined_emissivity",
@@ -123,7 +122,14 @@ def smith_wsgg_emissivity(temperature, pressure_path_length, case="pw/pc=2", *, 
     if check:
         check_positive("temperature", T, "K")
         check_nonnegative("pressure_path_length", pl, "atm m")
-        warn_out_of_range("T [K]", span(T), 600.0, 2400.0, "Smith et al. (1982) WSGG")
+        warn_out_of_range(
+            "T [K]",
+            T,
+            600.0,
+            2400.0,
+            "Smith et al. (1982) WSGG",
+            closure="gas_emissivity.smith1982",
+        )
     eps = np.zeros(np.broadcast(T, pl).shape)
     for kappa, b1, b2, b3, b4 in _SMITH[case]:
         a = b1 * 1e-1 + b2 * 1e-4 * T + b3 * 1e-7 * T**2 + b4 * 1e-11 * T**3
@@ -196,8 +202,15 @@ def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=T
         check_nonnegative("p_h2o", pw)
         check_nonnegative("p_co2", pc)
         if np.any(ptot > 0):
-            warn_out_of_range("MR", span(mr_raw[...]), 0.125, 2.0, "Johansson et al. (2011) WSGG")
-            warn_out_of_range("T [K]", span(T), 500.0, 2500.0, "Johansson et al. (2011) WSGG")
+            for what, v, lo, hi in (("MR", mr_raw[...], 0.125, 2.0), ("T [K]", T, 500.0, 2500.0)):
+                warn_out_of_range(
+                    what,
+                    v,
+                    lo,
+                    hi,
+                    "Johansson et al. (2011) WSGG",
+                    closure="gas_emissivity.johansson2011",
+                )
     mr = np.clip(mr_raw, 0.125, 2.0)
     tr = T / 1200.0
     pl = ptot * np.asarray(path_length, dtype=float)

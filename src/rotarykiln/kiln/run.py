@@ -9,8 +9,10 @@ residence-time effects with ``kiln_rtd.png``).
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
+from rotarykiln.kiln import closure_warnings
 from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.coupling import ModelRun
 from rotarykiln.kiln.solution import KilnSolution
@@ -48,6 +50,11 @@ def kiln_run(case) -> ModelRun:
     over the RTD) in its summary and its files (``kiln_rtd.png``), and as
     ``extra["residence"]``.
 
+    The closures' range warnings of the solve are given once per closure, with the heat flow
+    the closure feeds, its share of the heat to the solids and the other choices
+    (:mod:`rotarykiln.kiln.closure_warnings`; also as ``extra["closure_warnings"]``); any other
+    warning once per text.
+
     Returns
     -------
     rotarykiln.kiln.coupling.ModelRun
@@ -58,9 +65,13 @@ def kiln_run(case) -> ModelRun:
     from rotarykiln.kiln.residence import fed_reactant, residence_time_effects
 
     kiln, cells = kiln_from_case(case)
-    sol = solve_kiln(kiln, cells)
-    # nothing fed reacts: no residence-time effect to show
-    rtd = None if fed_reactant(kiln) is None else residence_time_effects(case, kiln, sol)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")  # every closure's check: grouped below
+        sol = solve_kiln(kiln, cells)
+        # nothing fed reacts: no residence-time effect to show
+        rtd = None if fed_reactant(kiln) is None else residence_time_effects(case, kiln, sol)
+    # one warning per closure out of its range, with the heat flow it feeds and its share
+    shown = closure_warnings.emit(caught, sol, case)
     extra = rtd.summary() if rtd is not None else {}
     summary = {f"kiln_{k}": v for k, v in sol.summary().items() if k != "name"}
     summary.update({f"kiln_{k}": v for k, v in extra.items()})
@@ -81,7 +92,10 @@ def kiln_run(case) -> ModelRun:
         plt.close(fig)
         return written
 
-    return ModelRun("kiln", sol, summary, write, extra={"residence": rtd})
+    closures = [w for w in shown if isinstance(w, closure_warnings.ClosureWarning)]
+    return ModelRun(
+        "kiln", sol, summary, write, extra={"residence": rtd, "closure_warnings": closures}
+    )
 
 
 def kiln_runner(case, out: Path) -> dict:
