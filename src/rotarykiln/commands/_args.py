@@ -1,4 +1,9 @@
-"""Shared helpers for subcommands: quantity arguments with units, output of results."""
+"""Shared helpers for subcommands: quantity arguments with units, output of results.
+
+Imported by every subcommand's module when its parser is built (``rotarykiln CMD --help``):
+pint (:mod:`rotarykiln.units`) and pandas (:mod:`rotarykiln.outputs`) are imported only when
+a quantity is converted or a result printed.
+"""
 
 from __future__ import annotations
 
@@ -6,8 +11,6 @@ import argparse
 from pathlib import Path
 
 from rotarykiln.errors import InputError
-from rotarykiln.outputs import to_json
-from rotarykiln.units import to_si
 
 __all__ = [
     "add_quantity",
@@ -42,6 +45,8 @@ def get_quantity(
         return None
     text = " ".join(tokens) if isinstance(tokens, list) else str(tokens)
     if within is None:
+        from rotarykiln.units import to_si
+
         return to_si(f"--{name}", text, kind)
     return to_si_within(f"--{name}", text, within)
 
@@ -65,6 +70,8 @@ def check_count(option: str, value, low: int, high: int, what: str = "a whole nu
 
 
 def print_json(data) -> None:
+    from rotarykiln.outputs import to_json
+
     print(to_json(data))
 
 

@@ -24,13 +24,14 @@ ch. 2 (dissociation and the equilibrium adiabatic flame temperature).
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from rotarykiln.errors import InputError
+from rotarykiln.materials import _cache
 from rotarykiln.materials.gas import MECHANISM, T_GRID, T_REF, parse_composition
 
 __all__ = [
@@ -53,10 +54,26 @@ def _species():
     return [s for s in ct.Species.list_from_file(MECHANISM) if s.name in DISSOCIATION_SPECIES]
 
 
-def _solution():
-    import cantera as ct
+_thread = threading.local()
 
-    return ct.Solution(thermo="ideal-gas", species=_species())
+
+def _solution():
+    """This thread's Cantera solution of :data:`DISSOCIATION_SPECIES` (its state is always set
+    in full, ``TPX``, before use: the same numbers as a fresh one)."""
+    gas = getattr(_thread, "gas", None)
+    if gas is None:
+        import cantera as ct
+
+        gas = _thread.gas = ct.Solution(thermo="ideal-gas", species=_species())
+    return gas
+
+
+def _cache_key(kind: str, *inputs) -> str:
+    import hashlib
+
+    grid = hashlib.sha256(T_GRID.tobytes()).hexdigest()
+    env = _cache.environment_key(MECHANISM, ("gas.py", "dissociation.py"))
+    return f"{kind};{inputs!r};T_GRID={grid};{env}"
 
 
 def _checked(composition):
@@ -151,10 +168,63 @@ def equilibrium_adiabatic_temperature(composition, T_frozen, pressure=101325.0) 
     ----------
     Turns (2012) ch. 2; Cantera ``equilibrate('HP')``.
     """
-    gas = _solution()
-    gas.TPX = T_frozen, pressure, dict(_checked(composition))
+    return _adiabatic(_checked(composition), float(T_frozen), float(pressure))
+
+
+@lru_cache(maxsize=1024)
+def _adiabatic(composition, T_frozen: float, pressure: float) -> float:
+    key = _cache_key("tad", composition, T_frozen, pressure)
+    a = _cache.load("dissociation", key)
+    if a is None:
+        a = {"T": np.float64(_adiabatic_state(composition, T_frozen, pressure))}
+        _cache.store("dissociation", key, a)
+    return float(a["T"])
+
+
+def _adiabatic_state(composition, T_frozen, pressure, gas=None) -> float:
+    gas = _solution() if gas is None else gas
+    gas.TPX = T_frozen, pressure, dict(composition)
     gas.equilibrate("HP")
     return float(gas.T)
+
+
+class PPolyValues:
+    """A piecewise polynomial evaluated as scipy's ``PPoly.__call__`` does, term for term.
+
+    ``x``: breakpoints; ``c``: coefficients in ``PPoly`` layout ``(order + 1, len(x) - 1)``.
+    ``self(T, nu)`` (``nu`` 0 or 1: the value or the first derivative) finds the interval
+    ``x[i] <= T < x[i+1]`` (the last closed, the end pieces extrapolated) and sums the powers
+    of ``T - x[i]`` from the lowest up with the same operations in the same order as scipy's
+    compiled loop, so the floats are the same (checked in the tests against ``CubicSpline``);
+    scipy's interpolate package (~0.3 s to import) is not needed to evaluate a stored spline.
+    """
+
+    def __init__(self, x, c):
+        self.x = np.asarray(x, dtype=float)
+        self.c = np.asarray(c, dtype=float)
+
+    def __call__(self, T, nu: int = 0):
+        if nu not in (0, 1):
+            raise ValueError("nu must be 0 or 1")
+        T = np.asarray(T, dtype=float)
+        t = T.reshape(-1)
+        i = np.searchsorted(self.x, t, side="right") - 1
+        np.clip(i, 0, len(self.x) - 2, out=i)
+        s = t - self.x[i]
+        c = self.c
+        n = c.shape[0]
+        res = np.zeros_like(s)
+        z = np.ones_like(s)
+        for kp in range(n):
+            if kp < nu:
+                continue
+            term = c[n - kp - 1].take(i) * z
+            if nu == 1:
+                term = term * float(kp)
+            res = res + term
+            if kp < n - 1:
+                z = z * s
+        return res.reshape(T.shape)
 
 
 @dataclass(frozen=True, eq=False)
@@ -168,7 +238,7 @@ class DissociationHeat:
     """
 
     composition: tuple[tuple[str, float], ...]
-    spline: CubicSpline
+    spline: PPolyValues
 
     def enthalpy(self, T):
         return self.spline(np.clip(np.asarray(T, dtype=float), T_GRID[0], T_GRID[-1]))
@@ -179,8 +249,21 @@ class DissociationHeat:
         return np.where(inside, self.spline(T, 1), 0.0)
 
 
-@lru_cache(maxsize=32)
+@lru_cache(maxsize=256)
 def _heat(composition: tuple[tuple[str, float], ...], pressure: float) -> DissociationHeat:
+    key = _cache_key("heat", composition, pressure)
+    a = _cache.load("dissociation", key)
+    if a is None:
+        a = _heat_arrays(composition, pressure)
+        _cache.store("dissociation", key, a)
+    return DissociationHeat(composition, PPolyValues(a["x"], a["c"]))
+
+
+def _heat_arrays(composition, pressure: float) -> dict:
+    """The spline of :class:`DissociationHeat` (Cantera's equilibria on :data:`T_GRID`,
+    scipy's ``CubicSpline``) as arrays ``x`` and ``c``."""
+    from scipy.interpolate import CubicSpline
+
     gas = _solution()
     gas.TPX = T_REF, pressure, dict(composition)
     y = dict(zip(gas.species_names, gas.Y, strict=True))
@@ -188,7 +271,8 @@ def _heat(composition: tuple[tuple[str, float], ...], pressure: float) -> Dissoc
     if carriers <= 0:
         raise InputError("products.composition", composition, "with CO2 or H2O")
     dh = dissociation_enthalpy(composition, T_GRID, pressure) / carriers
-    return DissociationHeat(composition, CubicSpline(T_GRID, dh))
+    spline = CubicSpline(T_GRID, dh)
+    return {"x": spline.x, "c": spline.c}
 
 
 def dissociation_heat(composition, pressure=101325.0) -> DissociationHeat:

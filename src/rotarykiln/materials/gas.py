@@ -18,20 +18,28 @@ species of a mixture) share one interval search and one Horner evaluation
 
 Reference state: :math:`h = 0` at 298.15 K for the *fixed* composition of the table (sensible
 enthalpy; no reactions inside the table).
+
+Start-up and caches: Cantera and scipy are imported only to compute a table or a flame, with
+one GRI-Mech 3.0 solution per thread (loading one costs ~0.05 s; the state is always set in
+full before use). Tables, burnt gases and the species list are kept in memory per input and
+on disk (:mod:`rotarykiln.materials._cache`, keyed on everything they depend on), so a run
+whose tables were computed before needs neither Cantera nor scipy's splines: the numbers read
+back are the ones computed, to the last bit.
 """
 
 from __future__ import annotations
 
 import difflib
+import hashlib
 import math
+import threading
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
 import numpy as np
-from scipy.interpolate import CubicSpline
-from scipy.optimize import brentq
 
 from rotarykiln.errors import InputError, check_positive, warn_out_of_range
+from rotarykiln.materials import _cache
 
 __all__ = [
     "GasPropertyTable",
@@ -41,6 +49,7 @@ __all__ = [
     "BurntGas",
     "burn_fuel",
     "check_composition",
+    "fuel_data",
     "molar_mass",
 ]
 
@@ -50,6 +59,31 @@ MECHANISM = "gri30.yaml"
 T_MIN, T_MAX = 200.0, 3200.0
 #: Temperatures (K) at which Cantera is sampled: the breakpoints of every fitted table.
 T_GRID = np.concatenate([np.linspace(T_MIN, 1000.0, 33), np.linspace(1025.0, T_MAX, 88)])
+
+_thread = threading.local()
+
+
+def gri30():
+    """This thread's Cantera solution of :data:`MECHANISM` (loaded once per thread).
+
+    Callers set its state in full (``TPX``) before reading it; thermodynamic and transport
+    properties and equilibria depend on the state only, so sharing it gives the same numbers
+    as a fresh solution, without loading the mechanism again (~0.05 s).
+    """
+    gas = getattr(_thread, "gri30", None)
+    if gas is None:
+        import cantera as ct
+
+        gas = _thread.gri30 = ct.Solution(MECHANISM)
+    return gas
+
+
+def _cache_key(kind: str, *inputs) -> str:
+    """Disk-cache key of a result of this module: its inputs (exact reprs), the temperature
+    grid and the environment (:func:`rotarykiln.materials._cache.environment_key`)."""
+    grid = hashlib.sha256(T_GRID.tobytes()).hexdigest()
+    env = _cache.environment_key(MECHANISM, ("gas.py",))
+    return f"{kind};{inputs!r};T_GRID={grid};T_MIN={T_MIN!r};T_MAX={T_MAX!r};{env}"
 
 
 def _clamp(T):
@@ -81,6 +115,7 @@ class PiecewisePolynomials:
         x = np.asarray(x, dtype=float)
         c = np.asarray(c, dtype=float)
         self.x = x
+        self.c = c
         self.order = c.shape[0] - 1
         self._last = len(x) - 2
         # one contiguous (pieces, ...) array per power: np.take gathers them fastest
@@ -158,7 +193,8 @@ class GasPropertyTable:
 
     Build it with :func:`gas_table` (cached per composition). Attributes: ``composition``
     (mole fractions), ``molar_mass`` (kg/mol), ``x_co2``, ``x_h2o`` (mole fractions used by the
-    gas radiation models), and the fitted splines. Valid 200-3200 K (the sampled range);
+    gas radiation models), and the fitted splines (:class:`PiecewisePolynomials` with scipy's
+    ``CubicSpline`` coefficients ``c`` on the breakpoints ``x``). Valid 200-3200 K (the sampled range);
     outside it cp, conductivity and viscosity are clamped to the end values and the enthalpy is
     extended linearly, without a warning in the hot loop: call :meth:`check_range` once on a
     converged state to be warned.
@@ -168,15 +204,15 @@ class GasPropertyTable:
     molar_mass: float
     x_co2: float
     x_h2o: float
-    _cp: CubicSpline = field(repr=False)
-    _h: object = field(repr=False)
-    _k: CubicSpline = field(repr=False)
-    _mu: CubicSpline = field(repr=False)
+    _cp: PiecewisePolynomials = field(repr=False)
+    _h: PiecewisePolynomials = field(repr=False)
+    _k: PiecewisePolynomials = field(repr=False)
+    _mu: PiecewisePolynomials = field(repr=False)
 
-    @cached_property
+    @property
     def _fits(self):
         """cp, h, k, mu as :class:`PiecewisePolynomials` (numpy evaluation of the splines)."""
-        return tuple(PiecewisePolynomials(f.x, f.c) for f in (self._cp, self._h, self._k, self._mu))
+        return (self._cp, self._h, self._k, self._mu)
 
     @cached_property
     def _cp_ends(self) -> tuple[float, float]:
@@ -243,11 +279,12 @@ class GasPropertyTable:
         return self.cp(T) * self.viscosity(T) / self.conductivity(T)
 
 
-@lru_cache(maxsize=64)
-def _cantera_table(composition: tuple[tuple[str, float], ...]) -> GasPropertyTable:
-    import cantera as ct
+def _table_arrays(composition: tuple[tuple[str, float], ...], gas=None) -> dict:
+    """Cantera sampled on :data:`T_GRID` and fitted (scipy's ``CubicSpline``): the arrays of a
+    :class:`GasPropertyTable` (``gas``: a GRI-Mech 3.0 solution, default :func:`gri30`)."""
+    from scipy.interpolate import CubicSpline
 
-    gas = ct.Solution(MECHANISM)
+    gas = gri30() if gas is None else gas
     unknown = [s for s, _ in composition if s not in gas.species_names]
     if unknown:
         raise InputError("gas.composition", ",".join(unknown), f"a species of {MECHANISM}")
@@ -268,16 +305,38 @@ def _cantera_table(composition: tuple[tuple[str, float], ...]) -> GasPropertyTab
     names = gas.species_names
     gas.TPX = 300.0, 101325.0, X
     xs = gas.X
+    k_fit, mu_fit = CubicSpline(temps, k), CubicSpline(temps, mu)
+    return {
+        "molar_mass": np.float64(gas.mean_molecular_weight / 1000.0),
+        "x_co2": np.float64(xs[names.index("CO2")]),
+        "x_h2o": np.float64(xs[names.index("H2O")]),
+        **{f"{n}_x": f.x for n, f in (("cp", cp_fit), ("h", h_fit), ("k", k_fit), ("mu", mu_fit))},
+        **{f"{n}_c": f.c for n, f in (("cp", cp_fit), ("h", h_fit), ("k", k_fit), ("mu", mu_fit))},
+    }
+
+
+def _table_from_arrays(composition, a: dict) -> GasPropertyTable:
+    fits = [PiecewisePolynomials(a[f"{n}_x"], a[f"{n}_c"]) for n in ("cp", "h", "k", "mu")]
     return GasPropertyTable(
         composition=composition,
-        molar_mass=gas.mean_molecular_weight / 1000.0,
-        x_co2=float(xs[names.index("CO2")]),
-        x_h2o=float(xs[names.index("H2O")]),
-        _cp=cp_fit,
-        _h=h_fit,
-        _k=CubicSpline(temps, k),
-        _mu=CubicSpline(temps, mu),
+        molar_mass=float(a["molar_mass"]),
+        x_co2=float(a["x_co2"]),
+        x_h2o=float(a["x_h2o"]),
+        _cp=fits[0],
+        _h=fits[1],
+        _k=fits[2],
+        _mu=fits[3],
     )
+
+
+@lru_cache(maxsize=256)
+def _cantera_table(composition: tuple[tuple[str, float], ...]) -> GasPropertyTable:
+    key = _cache_key("table", composition)
+    arrays = _cache.load("table", key)
+    if arrays is None:
+        arrays = _table_arrays(composition)
+        _cache.store("table", key, arrays)
+    return _table_from_arrays(composition, arrays)
 
 
 def gas_table(composition) -> GasPropertyTable:
@@ -364,19 +423,54 @@ def burn_fuel(
     D.G. Goodwin et al., Cantera 3 (https://cantera.org): equilibrium of the fuel-air mixture;
     GRI-Mech 3.0 thermo.
     """
-    import cantera as ct
-
     check_positive("gas.fuel_flow", fuel_flow, "kg/s")
     check_positive("gas.air_flow", air_flow, "kg/s")
-    fuel_x = dict(parse_composition(fuel))
-    gas_f = ct.Solution(MECHANISM)
-    gas_f.TPX = fuel_temperature, 101325.0, fuel_x
-    gas_a = ct.Solution(MECHANISM)
-    gas_a.TPX = air_temperature, 101325.0, "O2:0.21, N2:0.79"
+    comp, t_in, t_ad, q = _burn(
+        parse_composition(fuel),
+        float(fuel_flow),
+        float(air_flow),
+        float(fuel_temperature),
+        float(air_temperature),
+    )
+    return BurntGas(comp, fuel_flow + air_flow, t_in, t_ad, q, gas_table(comp))
+
+
+@lru_cache(maxsize=1024)
+def _burn(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature):
+    """Products, inlet and adiabatic temperatures (K) and heat release (W) of
+    :func:`burn_fuel`: in memory, else on disk, else computed (:func:`_burn_state`)."""
+    key = _cache_key("burn", fuel, fuel_flow, air_flow, fuel_temperature, air_temperature)
+    a = _cache.load("burn", key)
+    if a is None:
+        comp, t_in, t_ad, q = _burn_state(
+            fuel, fuel_flow, air_flow, fuel_temperature, air_temperature
+        )
+        a = {
+            "species": np.array([k for k, _ in comp]),
+            "x": np.array([x for _, x in comp], dtype=float),
+            "values": np.array([t_in, t_ad, q], dtype=float),
+        }
+        _cache.store("burn", key, a)
+    comp = tuple((str(k), float(x)) for k, x in zip(a["species"], a["x"], strict=True))
+    t_in, t_ad, q = (float(v) for v in a["values"])
+    return comp, t_in, t_ad, q
+
+
+def _burn_state(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, gas=None):
+    """Cantera's part of :func:`burn_fuel` (``gas``: a GRI-Mech 3.0 solution, default
+    :func:`gri30`): the products' composition, ``t_in``, ``t_ad`` (K) and heat release (W)."""
+    import cantera as ct
+    from scipy.optimize import brentq
+
+    gas = gri30() if gas is None else gas
+    fuel_x = dict(fuel)
     # constant="HP": streams mixing at constant pressure and enthalpy (Cantera's default, UV,
-    # is a rigid vessel: wrong by ~15 K for air preheated to 1100 K)
-    qf = ct.Quantity(gas_f, mass=fuel_flow, constant="HP")
-    qa = ct.Quantity(gas_a, mass=air_flow, constant="HP")
+    # is a rigid vessel: wrong by ~15 K for air preheated to 1100 K). A Quantity keeps its own
+    # state: both streams can share one solution.
+    gas.TPX = fuel_temperature, 101325.0, fuel_x
+    qf = ct.Quantity(gas, mass=fuel_flow, constant="HP")
+    gas.TPX = air_temperature, 101325.0, "O2:0.21, N2:0.79"
+    qa = ct.Quantity(gas, mass=air_flow, constant="HP")
     mix = qf + qa
     t_in = float(mix.T)
     h_reactants = float(mix.enthalpy_mass)
@@ -402,7 +496,7 @@ def burn_fuel(
             f"{air_flow / fuel_flow:.4g}: the products would leave outside [{lo:g}, {hi:g}] K)",
         )
     t_ad = float(brentq(lambda t: float(table.enthalpy(t)) - target, lo, hi))
-    return BurntGas(comp, m, t_in, t_ad, q, table)
+    return comp, t_in, t_ad, q
 
 
 # --------------------------------------------------------------------------------------------
@@ -419,15 +513,83 @@ _COMPOSITION_FORM = 'mole fractions summing to 1 as "CH4:0.95, C2H6:0.03, N2:0.0
 def _gri30_species() -> dict[str, tuple[str, float]]:
     """GRI-Mech 3.0 species: lower-case name -> (gri30 spelling, molar mass in kg/mol).
 
-    Cantera is loaded once per process (a few tenths of a second).
+    Read from the disk cache, else from Cantera (loaded once per process: a few tenths of a
+    second).
     """
-    import cantera as ct
-
-    gas = ct.Solution(MECHANISM)
+    key = _cache_key("species")
+    a = _cache.load("species", key)
+    if a is None:
+        gas = gri30()
+        a = {
+            "names": np.array(gas.species_names),
+            "molar_mass": np.array([float(w) / 1000.0 for w in gas.molecular_weights]),
+        }
+        _cache.store("species", key, a)
     return {
-        name.lower(): (name, float(w) / 1000.0)
-        for name, w in zip(gas.species_names, gas.molecular_weights, strict=True)
+        str(name).lower(): (str(name), float(w))
+        for name, w in zip(a["names"], a["molar_mass"], strict=True)
     }
+
+
+H2O_VAPORISATION = 44.004e3
+"""Enthalpy of vaporisation of water at 298.15 K, J/mol (the HHV - LHV gap per mol of H2O)."""
+
+
+@lru_cache(maxsize=64)
+def fuel_data(fuel) -> tuple[float, float, float, float]:
+    """Molar mass (kg/mol), O2 demand (mol/mol), LHV and HHV (J/kg) of a fuel at 298.15 K.
+
+    Complete combustion to CO2 and H2O (vapour for the LHV; liquid for the HHV, with
+    :data:`H2O_VAPORISATION`), GRI-Mech 3.0 thermochemistry (Cantera). Kept in memory and on
+    disk per fuel (:func:`parse_composition` form); computed as ``kiln.flame`` did.
+
+    Examples
+    --------
+    >>> mm, o2, lhv, hhv = fuel_data(parse_composition("CH4:1"))
+    >>> round(mm * 1e3, 3), o2, round(lhv / 1e6, 2), round(hhv / 1e6, 2)
+    (16.043, 2.0, 50.03, 55.51)
+    """
+    fuel = parse_composition(fuel) if not isinstance(fuel, tuple) else fuel
+    key = _cache_key("fuel", fuel, H2O_VAPORISATION)
+    a = _cache.load("fuel", key)
+    if a is None:
+        a = {"values": np.array(_fuel_state(fuel), dtype=float)}
+        _cache.store("fuel", key, a)
+    mm, o2, lhv, hhv = (float(v) for v in a["values"])
+    return mm, o2, lhv, hhv
+
+
+def _fuel_state(fuel, gas=None) -> tuple[float, float, float, float]:
+    """Cantera's part of :func:`fuel_data` (``gas``: a GRI-Mech 3.0 solution, default
+    :func:`gri30`)."""
+    gas = gri30() if gas is None else gas
+    x = dict(fuel)
+    gas.TPX = T_REF, 101325.0, x
+    mm = gas.mean_molecular_weight / 1000.0
+    o2 = 0.0
+    c = h = 0.0
+    for name, xi in x.items():
+        k = gas.species_index(name)
+        nc = gas.n_atoms(k, "C") if "C" in gas.element_names else 0.0
+        nh = gas.n_atoms(k, "H")
+        no = gas.n_atoms(k, "O")
+        o2 += xi * (nc + nh / 4.0 - no / 2.0)
+        c += xi * nc
+        h += xi * nh
+    h_fuel = gas.enthalpy_mole  # J/kmol
+    n_o2 = gas.n_atoms(gas.species_index("O2"), "O") / 2.0  # 1
+    comp = {"CO2": c, "H2O": h / 2.0}
+    for name, xi in x.items():
+        if name in ("N2", "AR", "Ar", "HE"):
+            comp[name] = comp.get(name, 0.0) + xi
+    total = sum(comp.values())
+    gas.TPX = T_REF, 101325.0, {k: v / total for k, v in comp.items() if v > 0}
+    h_prod = gas.enthalpy_mole * total
+    gas.TPX = T_REF, 101325.0, "O2:1"
+    h_react = h_fuel + o2 * gas.enthalpy_mole * n_o2
+    lhv = (h_react - h_prod) / 1000.0 / mm  # J/kg of fuel
+    hhv = lhv + (h / 2.0) * H2O_VAPORISATION / mm
+    return mm, o2, lhv, hhv
 
 
 def _composition_items(composition, field: str) -> list[tuple[str, object]]:
