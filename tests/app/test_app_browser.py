@@ -1,5 +1,6 @@
 """The app end to end in headless Chromium: load, edit an input, run, compare the displayed
-outlet temperature with the solver's; bad input shown next to its field, results kept."""
+outlet temperature with the solver's; bad input shown next to its field, results kept; an RTD,
+a transport and a transverse case show their results; the page holds at 420 px."""
 
 from __future__ import annotations
 
@@ -76,7 +77,7 @@ def _run(driver, expect_ok: bool = True) -> str:
     status = _status(driver)
     if expect_ok:
         assert "finished" in status, status + " / " + _by(driver, "#run-error").text
-        _wait(driver, lambda d: d.find_elements("id", "outlet-temperature"))
+        _wait(driver, lambda d: d.find_elements("id", "headline"))
     return status
 
 
@@ -205,3 +206,110 @@ def test_bad_input_is_shown_next_to_its_field_and_results_stay(
     _run(browser)
     assert _field_error(browser, "operation.feed") == ""
     assert _by(browser, "#outlet-temperature").text == outlet  # the same inputs as the first run
+
+
+RTD_CASE = "rtd/bongo_njeng_sand_rl"
+TRANSPORT_CASE = "charcoal_activation_kramers"  # a kiln whose bed depth follows Kramers
+TRANSVERSE_CASE = "retort/case02"
+
+
+def _builtin(name: str) -> dict:
+    return yaml.safe_load(builtin_case_path(name).read_text(encoding="utf-8"))
+
+
+def _pick(driver, name: str) -> None:
+    """Choose a built-in case in the case list (searched by its name) and wait for it."""
+    _by(driver, "#case-picker").click()
+    _wait(driver, lambda d: d.find_element("css selector", ".dash-dropdown-search")).send_keys(name)
+    option = _wait(
+        driver,
+        lambda d: next(
+            (o for o in d.find_elements("css selector", "[role=option]") if o.text == name),
+            None,
+        ),
+    )
+    option.click()
+    _wait(driver, lambda d: _by(d, "#case-info").text == f"Loaded: {name} (built-in)")
+
+
+def _drawn(driver, graph: str) -> list:
+    """The traces Plotly drew in the figure ``graph`` (an element id)."""
+    return _wait(
+        driver, lambda d: d.find_elements("css selector", f"#{graph} .scatterlayer .trace")
+    )
+
+
+def _page_text(driver) -> str:
+    return driver.find_element("tag name", "body").text
+
+
+def test_each_case_type_shows_its_results_and_the_page_holds_at_420_px(
+    browser, app_server, screenshot
+):
+    from rotarykiln.kiln.coupling import bed_profile_from_case
+    from rotarykiln.rtd.predict import predict_from_case
+
+    _open(browser, app_server)
+
+    # an RTD case: E(t) drawn, its moments shown as the prediction gives them
+    _pick(browser, RTD_CASE)
+    _run(browser)
+    prediction = predict_from_case(parse_case(_builtin(RTD_CASE)))
+    assert _drawn(browser, "rtd-graph")
+    minutes = prediction.mean_residence_time / 60
+    assert _by(browser, "#headline-value").text == f"{minutes:.1f} min"
+    moments = _by(browser, "#rtd").text
+    assert f"{minutes:.2f}\nmin" in moments or f"{minutes:.2f} min" in moments, moments
+    assert f"{prediction.variance / 3600:.3g}" in moments and "Péclet" in moments, moments
+    assert "no heat model" not in _page_text(browser).lower()
+    screenshot(browser, "app_rtd.png")
+
+    # a kiln with a transport section: its temperatures and its bed profile
+    _pick(browser, TRANSPORT_CASE)
+    _run(browser)
+    profile = bed_profile_from_case(parse_case(_builtin(TRANSPORT_CASE)))
+    assert _drawn(browser, "bed-profile-graph")
+    assert _drawn(browser, "temperature-graph-kiln")
+    bed = _by(browser, "#bed-profile").text
+    assert f"{profile.holdup_mass:.4g}" in bed, bed
+    assert f"{profile.mean_residence_time / 60:.1f}" in bed, bed
+    assert _by(browser, "#outlet-temperature").get_attribute("data-kelvin")
+    assert "no heat model" not in _page_text(browser).lower()
+
+    # a transverse (retort-zone) case: the transverse run's time series, not "no heat model"
+    _pick(browser, TRANSVERSE_CASE)
+    _run(browser)
+    assert len(_drawn(browser, "transverse-graph")) == 4  # 2 temperatures, mixing, volatiles
+    assert "Mixing time" in _by(browser, "#transverse").text
+    assert "no heat model" not in _page_text(browser).lower()
+    screenshot(browser, "app_transverse.png")
+
+    # the page holds on a phone: no horizontal scrollbar, figures as wide as the screen
+    _pick(browser, TRANSPORT_CASE)
+    _run(browser)
+    _drawn(browser, "bed-profile-graph")
+    size = browser.get_window_size()
+    try:
+        browser.set_window_size(420, 900)
+        _wait(browser, lambda d: d.execute_script("return window.innerWidth") <= 440)
+        width = browser.execute_script("return window.innerWidth")
+        assert 380 <= width <= 440, width  # the window did narrow
+        # Plotly redraws the figures at the new width
+        _wait(
+            browser,
+            lambda d: d.execute_script(
+                "return [...document.querySelectorAll('.graph .main-svg')]"
+                ".every(s => s.getBoundingClientRect().right <= window.innerWidth)"
+            ),
+        )
+        scroll = browser.execute_script("return document.documentElement.scrollWidth")
+        assert scroll <= width + 1, (scroll, width)
+        wide = browser.execute_script(
+            "return [...document.querySelectorAll('body *')]"
+            ".filter(e => e.getBoundingClientRect().right > window.innerWidth + 1)"
+            ".map(e => e.tagName + '.' + e.className + '#' + e.id).slice(0, 5)"
+        )
+        assert wide == [], wide
+        screenshot(browser, "app_420px.png")
+    finally:
+        browser.set_window_size(size["width"], size["height"])

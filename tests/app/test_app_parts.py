@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import base64
+import json
 
+import numpy as np
 import pytest
 
 from rotarykiln.app.inputs import apply_edits, check_value, field_of_error, present_inputs
@@ -211,3 +213,130 @@ def test_save_writes_the_edited_case_without_running():
     assert download["filename"] == "tscheng_A16.yaml"
     assert "speed: 1.5 rpm" in download["content"]
     assert status.startswith("Save 1: tscheng_A16.yaml")
+
+
+@pytest.fixture(scope="module")
+def store(tmp_path_factory):
+    """One run store (and its worker process) for the runs of the model results below."""
+    from rotarykiln.app.running import RunStore
+
+    runs = RunStore(tmp_path_factory.mktemp("runs"))
+    try:
+        yield runs
+    finally:
+        runs.close()
+
+
+def _panel_text(result) -> str:
+    """Every text of the results panel the page draws for a run."""
+    pytest.importorskip("dash")
+    from rotarykiln.app.callbacks import render
+
+    data = {**result.to_json(), "case_yaml": ""}
+    return json.dumps(render(data), default=lambda c: c.to_plotly_json())
+
+
+def test_an_rtd_case_shows_its_distribution_with_its_moments(store):
+    from rotarykiln.app.results import MAX_POINTS
+    from rotarykiln.rtd.predict import predict_from_case
+
+    result = store.run(load_builtin("rtd/bongo_njeng_sand_rl"), "rtd/bongo_njeng_sand_rl")
+    rtd = result.models["rtd"]
+    t, e = np.array(rtd["t_s"]), np.array(rtd["E_1_s"])
+    assert 100 <= len(t) <= MAX_POINTS
+    prediction = predict_from_case(parse_case(load_builtin("rtd/bongo_njeng_sand_rl")))
+    # the curve sent to the page is the prediction's: its moments, from the thinned points
+    assert np.trapezoid(e, t) == pytest.approx(1.0, abs=0.01)
+    mean = np.trapezoid(t * e, t)
+    assert mean == pytest.approx(prediction.mean_residence_time, rel=0.01)
+    assert np.trapezoid((t - mean) ** 2 * e, t) == pytest.approx(prediction.variance, rel=0.05)
+    panel = _panel_text(result)
+    assert "rtd-graph" in panel and "Mean residence time (RTD)" in panel
+    assert f"{prediction.mean_residence_time / 60:.2f}" in panel
+    assert "no heat model" not in panel.lower()
+
+
+def test_a_transport_case_shows_its_bed_profile_and_no_server_path(store):
+    from rotarykiln.kiln.coupling import bed_profile_from_case
+
+    name = "charcoal_activation_kramers"
+    result = store.run(load_builtin(name), name)
+    profile = bed_profile_from_case(parse_case(load_builtin(name)))
+    bed = result.models["bed"]
+    assert bed["z_m"][-1] == pytest.approx(profile.z[-1])
+    assert max(bed["depth_m"]) == pytest.approx(float(np.max(profile.depth)), rel=1e-6)
+    assert result.summary["transport_profile_csv"] == "profile.csv"  # a name, not a path
+    assert str(store.root) not in json.dumps(result.to_json())
+    panel = _panel_text(result)
+    assert "bed-profile-graph" in panel and "temperature-graph-kiln" in panel
+    assert f"{profile.holdup_mass:.4g}" in panel
+
+
+def test_a_transverse_case_runs_as_the_transverse_command(store):
+    import dataclasses
+
+    from rotarykiln.transverse.config import retort_spec_from_case
+    from rotarykiln.transverse.retort import run_retort
+
+    result = store.run(load_builtin("retort/case02"), "retort/case02")
+    found = result.models["transverse"]
+    assert "skipped" not in found, found.get("skipped")
+    spec = retort_spec_from_case(parse_case(load_builtin("retort/case02")))
+    direct = run_retort(dataclasses.replace(spec, snapshot_times=()))
+    assert found["summary"]["mixing_time_s"] == pytest.approx(direct.mixing_time)
+    assert found["summary"]["final_shale_temperature_K"] == pytest.approx(direct.temperature[-1, 1])
+    assert found["series"]["t_s"][-1] == pytest.approx(direct.t[-1])
+    assert {"transverse_timeseries.csv", "transverse_summary.json"} <= set(result.files)
+    panel = _panel_text(result)
+    assert "transverse-graph" in panel and "Mixing time" in panel
+    assert "no heat model" not in panel.lower()
+
+
+@pytest.mark.parametrize("name", [n for n in builtin_cases() if n.startswith("retort/")])
+def test_the_app_runs_the_transverse_section_of_every_builtin_retort_case(name):
+    from rotarykiln.app.results import TRANSVERSE_SECONDS, transverse_estimate
+    from rotarykiln.transverse.config import retort_spec_from_case
+
+    seconds, why = transverse_estimate(retort_spec_from_case(parse_case(load_builtin(name))))
+    assert why == "" and seconds < TRANSVERSE_SECONDS / 2
+
+
+def test_a_transverse_run_too_heavy_for_the_app_gives_its_command(tmp_path):
+    from rotarykiln.app.results import model_results
+
+    raw = load_builtin("retort/case02")
+    raw["transverse"]["duration"] = "3000 s"
+    raw["transverse"]["grid"] = {"layers": 20, "zones": 60}
+    found = model_results(parse_case(raw), tmp_path, "my_retort.yaml")["transverse"]
+    assert "series" not in found and list(tmp_path.iterdir()) == []  # nothing was run
+    assert found["skipped"].startswith("The app does not run this transverse section: it ")
+    assert "longer than the app runs" in found["skipped"]
+    assert found["command"] == "rotarykiln transverse my_retort.yaml"
+    assert ("Simulated time", "3000", "s") in found["inputs"]
+    from rotarykiln.app.running import RunResult
+
+    shown = RunResult("0" * 32, "retort", {"regime": "rolling"}, models={"transverse": found})
+    panel = _panel_text(shown)
+    assert found["skipped"] in panel and "rotarykiln transverse my_retort.yaml" in panel
+    assert "no heat model" not in panel.lower()
+    raw["transverse"]["grid"] = {"layers": 50, "zones": 50}
+    found = model_results(parse_case(raw), tmp_path, "my_retort.yaml")["transverse"]
+    assert "2500 control volumes" in found["skipped"]
+
+
+def test_the_warnings_are_shown_as_the_models_give_them_in_every_run(store, tmp_path):
+    """The page's warnings are the texts the run gives (their units included), in the second
+    run of the same worker process too."""
+    import warnings
+
+    from rotarykiln.commands.run import run_case
+
+    name = "rotary_pyrolysis"
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("default")
+        run_case(parse_case(load_builtin(name)), tmp_path, plots=False)
+    given = list(dict.fromkeys(str(w.message) for w in caught))
+    assert given  # the case warns: its gas is colder than a closure's range
+    first = store.run(load_builtin(name), name)
+    second = store.run(load_builtin(name), name)
+    assert first.warnings == given and second.warnings == given

@@ -30,7 +30,14 @@ from rotarykiln.app.checks import (
     shown_paths,
     source_label,
 )
-from rotarykiln.app.figures import composition_figure, temperature_figure
+from rotarykiln.app.figures import (
+    HEIGHTS,
+    bed_profile_figure,
+    composition_figure,
+    rtd_figure,
+    temperature_figure,
+    transverse_figure,
+)
 from rotarykiln.app.inputs import apply_edits, check_value, field_of_error, present_inputs
 from rotarykiln.app.layout import input_rows, results_view
 from rotarykiln.app.loading import load_builtin, load_upload
@@ -64,23 +71,48 @@ def _validate(
 _KEEP = (no_update, no_update)  # no file, the results panel as it is
 
 
+def _graph(ident: str, figure, kind: str = "") -> dcc.Graph:
+    """A figure drawn as wide as the panel (a phone's screen too), redrawn when it changes."""
+    return dcc.Graph(
+        id=ident,
+        figure=figure,
+        responsive=True,
+        style={"height": f"{HEIGHTS.get(kind, 400)}px"},
+        className="graph",
+        config={"displaylogo": False},
+    )
+
+
+def _number(value) -> float | None:
+    return float(value) if isinstance(value, int | float) and not isinstance(value, bool) else None
+
+
 def render(result: dict) -> list:
-    """The results panel of a run (the data :func:`press` stores)."""
+    """The results panel of a run (the data :func:`press` stores): the kiln's profiles, and the
+    figures of the case's other models (bed profile, RTD, transverse run)."""
     raw = load_yaml_text(result.get("case_yaml") or "{}", "the run's case", what="case file")
     figures = []
     for name, profiles in result["profiles"].items():
-        title = result["name"] if len(result["profiles"]) == 1 else f"{result['name']} ({name})"
+        title = "" if len(result["profiles"]) == 1 else name
         figures.append(
-            dcc.Graph(
-                id=f"temperature-graph-{name}",
-                figure=temperature_figure(profiles, title, raw),
-                config={"displaylogo": False},
-            )
+            _graph(f"temperature-graph-{name}", temperature_figure(profiles, title, raw))
         )
         comp = composition_figure(profiles, title)
         if comp is not None:
-            figures.append(dcc.Graph(figure=comp, config={"displaylogo": False}))
-    return results_view(result, outlet_temperature(result["summary"]), figures)
+            figures.append(_graph(f"composition-graph-{name}", comp))
+    models = result.get("models") or {}
+    graphs = {}
+    if models.get("bed"):
+        graphs["bed"] = _graph("bed-profile-graph", bed_profile_figure(models["bed"], ""))
+    if models.get("rtd"):
+        mean = _number(result["summary"].get("rtd_mean_residence_time_s"))
+        graphs["rtd"] = _graph("rtd-graph", rtd_figure(models["rtd"], "", mean))
+    series = (models.get("transverse") or {}).get("series")
+    if series:
+        graphs["transverse"] = _graph(
+            "transverse-graph", transverse_figure(series, ""), "transverse"
+        )
+    return results_view(result, outlet_temperature(result["summary"]), figures, graphs)
 
 
 def press(store: RunStore, saving: bool, n_run, n_save, case_data, values, ids, previous):

@@ -1,5 +1,9 @@
-"""Interactive figures of a run (Plotly): temperature profiles with the measured points, and the
-solids composition along the kiln of a reacting case."""
+"""Interactive figures of a run (Plotly): temperature profiles with the measured points, the
+solids composition along the kiln of a reacting case, the transport model's bed profile, the
+predicted residence time distribution and the transverse (retort-zone) time series.
+
+The figures set no size: the page draws them responsive, as wide as the panel (a phone's
+screen too), at the height it gives them (:data:`HEIGHTS`)."""
 
 from __future__ import annotations
 
@@ -13,7 +17,18 @@ from rotarykiln.errors import InputError
 from rotarykiln.kiln.profiles import COLOURS as PROFILE_COLOURS
 from rotarykiln.units import to_si
 
-__all__ = ["composition_figure", "measured_points", "temperature_figure"]
+__all__ = [
+    "HEIGHTS",
+    "bed_profile_figure",
+    "composition_figure",
+    "measured_points",
+    "rtd_figure",
+    "temperature_figure",
+    "transverse_figure",
+]
+
+HEIGHTS = {"transverse": 560}
+"""Height of a figure on the page, px, by kind (400 px for the others)."""
 
 # the colours of the matplotlib figures, as Plotly takes them: one palette for both
 COLOURS = {key: to_hex(colour) for key, colour in PROFILE_COLOURS.items()}
@@ -27,18 +42,30 @@ NAMES = {
 }
 
 
-def _layout(fig: go.Figure, title: str, ytitle: str) -> go.Figure:
+_Z_TITLE = "distance from the solids inlet, z (m)"
+
+
+def _layout(fig: go.Figure, title: str, ytitle: str, xtitle: str = _Z_TITLE) -> go.Figure:
     fig.update_layout(
         title={"text": title, "x": 0.01, "font": {"size": 15}},
-        xaxis_title="distance from the solids inlet, z (m)",
+        xaxis_title=xtitle,
         yaxis_title=ytitle,
         template="plotly_white",
-        height=400,
+        autosize=True,
         margin={"l": 60, "r": 20, "t": 50, "b": 50},
-        legend={"orientation": "h", "y": -0.2, "x": 0},
+        legend={"orientation": "h", "y": -0.2, "x": 0, "yanchor": "top"},
         hovermode="x unified",
     )
     return fig
+
+
+def _title(kind: str, title: str) -> str:
+    """A figure's title: its kind, then ``title`` (a case or a profile's name) if any."""
+    return f"{kind}: {title}" if title else kind
+
+
+def _scaled(values: list, factor: float) -> list:
+    return [None if v is None else factor * v for v in values]
 
 
 def _find_measurements(raw: Any, depth: int = 0) -> dict | None:
@@ -118,7 +145,7 @@ def temperature_figure(profiles: dict[str, list], title: str, raw: Any = None) -
                 hovertemplate="%{y:.1f} K (measured)",
             )
         )
-    return _layout(fig, f"Temperatures: {title}", "temperature (K)")
+    return _layout(fig, _title("Temperatures", title), "temperature (K)")
 
 
 def composition_figure(profiles: dict[str, list], title: str) -> go.Figure | None:
@@ -140,4 +167,110 @@ def composition_figure(profiles: dict[str, list], title: str) -> go.Figure | Non
                 hovertemplate="%{y:.3g} kg/h",
             )
         )
-    return _layout(fig, f"Solids composition: {title}", "solids species flow (kg/h)")
+    return _layout(fig, _title("Solids composition", title), "solids species flow (kg/h)")
+
+
+def bed_profile_figure(bed: dict[str, list], title: str) -> go.Figure:
+    """The bed depth along the kiln from the transport model (``z_m``, ``depth_m``, with the
+    local ``fill`` and the solids' ``residence_time_s`` from the inlet in the hover), mm."""
+    fill = [None if v is None else 100 * v for v in bed.get("fill", [])]
+    minutes = _scaled(bed.get("residence_time_s", []), 1 / 60)
+    fig = go.Figure(
+        go.Scatter(
+            x=bed.get("z_m", []),
+            y=_scaled(bed.get("depth_m", []), 1e3),
+            mode="lines",
+            name="bed depth",
+            line={"color": COLOURS.get("bed"), "width": 2.5},
+            fill="tozeroy",
+            customdata=list(zip(fill, minutes, strict=False)) if fill and minutes else None,
+            hovertemplate="%{y:.1f} mm deep"
+            + (
+                "<br>fill %{customdata[0]:.2f} %<br>%{customdata[1]:.1f} min from the inlet"
+                if fill and minutes
+                else ""
+            )
+            + "<extra></extra>",
+        )
+    )
+    _layout(fig, _title("Bed profile", title), "bed depth (mm)")
+    fig.update_layout(showlegend=False, yaxis_rangemode="tozero")
+    return fig
+
+
+def rtd_figure(rtd: dict[str, list], title: str, mean_s: float | None = None) -> go.Figure:
+    """The predicted exit-age distribution E(t) (``t_s``, ``E_1_s``; ``F`` in the hover), in
+    minutes, with the mean residence time ``mean_s`` (s) marked."""
+    cumulative = rtd.get("F") or []
+    fig = go.Figure(
+        go.Scatter(
+            x=_scaled(rtd.get("t_s", []), 1 / 60),
+            y=_scaled(rtd.get("E_1_s", []), 60),
+            mode="lines",
+            name="E(t), predicted",
+            line={"color": COLOURS.get("bed"), "width": 2.5},
+            customdata=cumulative or None,
+            hovertemplate="E = %{y:.4g} 1/min"
+            + ("<br>F = %{customdata:.3f}" if cumulative else "")
+            + "<extra>%{x:.1f} min</extra>",
+        )
+    )
+    _layout(fig, _title("Residence time distribution", title), "E(t) (1/min)", "time, t (min)")
+    if mean_s is not None:
+        fig.add_vline(
+            x=mean_s / 60,
+            line={"color": "#5f6670", "dash": "dot"},
+            annotation_text=f"mean {mean_s / 60:.1f} min",
+            annotation_position="top right",
+        )
+    fig.update_layout(hovermode="closest", showlegend=False)
+    return fig
+
+
+def transverse_figure(series: dict[str, list], title: str) -> go.Figure:
+    """The transverse run against time: the mean temperatures of the shale and the ash (K,
+    above), the extent of mixing and the volatiles evolved (% , below)."""
+    from plotly.subplots import make_subplots
+
+    t = series.get("t_s", [])
+    fig = make_subplots(rows=2, cols=1, shared_xaxes=True, vertical_spacing=0.08)
+    for column, name, colour in (
+        ("T_shale_K", "shale", COLOURS.get("bed")),
+        ("T_ash_K", "ash", COLOURS.get("gas")),
+    ):
+        if column in series:
+            fig.add_trace(
+                go.Scatter(
+                    x=t,
+                    y=series[column],
+                    mode="lines",
+                    name=f"{name}, mean temperature",
+                    line={"color": colour, "width": 2.5},
+                    hovertemplate="%{y:.1f} K",
+                ),
+                row=1,
+                col=1,
+            )
+    for column, name, dash in (
+        ("extent_percent", "extent of mixing", "solid"),
+        ("volatiles_percent", "volatiles evolved", "dash"),
+    ):
+        if column in series:
+            fig.add_trace(
+                go.Scatter(
+                    x=t,
+                    y=series[column],
+                    mode="lines",
+                    name=name,
+                    line={"width": 2, "dash": dash},
+                    hovertemplate="%{y:.1f} %",
+                ),
+                row=2,
+                col=1,
+            )
+    _layout(fig, _title("Transverse run", title), "mean temperature (K)", "")
+    fig.update_yaxes(title_text="mean temperature (K)", row=1, col=1)
+    fig.update_yaxes(title_text="percent (%)", row=2, col=1)
+    fig.update_xaxes(title_text="time, t (s)", row=2, col=1)
+    fig.update_layout(legend={"y": -0.12})
+    return fig

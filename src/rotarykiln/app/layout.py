@@ -1,8 +1,10 @@
 """The page: a case panel (pick or upload a case, edit its main inputs, run) beside the results
-(outlet temperature, key figures, profiles, downloads, the run's figures).
+(outlet temperature, key figures, profiles, the bed profile, RTD and transverse results of the
+cases that have them, downloads, the run's figures).
 
-Element ids are part of the app's interface: the browser tests find them (``outlet-temperature``
-carries the solver's value in ``data-kelvin``).
+Element ids are part of the app's interface: the browser tests find them (``headline`` is there
+after every run; ``outlet-temperature`` carries the solver's value in ``data-kelvin`` for a case
+with a kiln model; ``bed-profile``, ``rtd`` and ``transverse`` are the sections of those models).
 """
 
 from __future__ import annotations
@@ -11,7 +13,16 @@ from dash import dcc, html
 
 from rotarykiln import __version__
 from rotarykiln.app.inputs import MainInput
-from rotarykiln.app.summary import format_kelvin, key_figures, summary_rows
+from rotarykiln.app.summary import (
+    bed_rows,
+    format_kelvin,
+    headline,
+    key_figures,
+    models_run,
+    rtd_rows,
+    summary_rows,
+    transverse_rows,
+)
 
 __all__ = ["input_rows", "page", "results_view"]
 
@@ -178,13 +189,13 @@ def _table(rows: list[tuple[str, str, str]], class_name: str) -> html.Table:
     )
 
 
-def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) -> list:
-    """The results panel of one run (``result``: :meth:`RunResult.to_json`)."""
-    run_id = result["run_id"]
-    summary = result["summary"]
+def _headline(result: dict, outlet: tuple[str, float] | None) -> html.Div:
+    """The run's main figure: the bed outlet temperature of a kiln model, else the main
+    result of the case's other models (:func:`rotarykiln.app.summary.headline`)."""
     if outlet is not None:
         key, kelvin = outlet
-        headline = html.Div(
+        return html.Div(
+            id="headline",
             className="headline",
             children=[
                 html.Div("Bed outlet temperature", className="headline-label"),
@@ -197,12 +208,94 @@ def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) 
                 _previous(result.get("previous_outlet"), kelvin),
             ],
         )
+    label, value, note = headline(result["summary"], result.get("models") or {})
+    return html.Div(
+        id="headline",
+        className="headline",
+        children=[
+            html.Div(label, className="headline-label"),
+            html.Div(value, id="headline-value", className="headline-value"),
+            html.Div(note, className="muted"),
+        ],
+    )
+
+
+def _transverse_section(found: dict, graph) -> html.Div:
+    """The transverse results, or why the app did not run them and the command that does;
+    the run's inputs below."""
+    inputs = _table(found.get("inputs") or [], "model-table")
+    if found.get("skipped"):
+        body = [
+            html.P(found["skipped"], className="note", id="transverse-note"),
+            html.P(["Command: ", html.Code(found.get("command", ""))], className="small command"),
+            html.H4("Inputs of the transverse run"),
+            inputs,
+        ]
     else:
-        headline = html.Div(
-            "This case has no heat model: no outlet temperature.",
-            id="outlet-temperature",
-            className="headline muted",
+        body = [
+            html.P(
+                [
+                    "As ",
+                    html.Code(found.get("command", "rotarykiln transverse")),
+                    " computes them; the command also draws colour maps of the grid at the "
+                    "snapshot times.",
+                ],
+                className="muted small",
+            ),
+            _table(transverse_rows(found.get("summary") or {}), "model-table"),
+            *([graph] if graph is not None else []),
+            html.Details([html.Summary("Inputs of the transverse run"), inputs]),
+        ]
+    return html.Div(
+        [html.H3("Transverse results (retort zone)"), *body], id="transverse", className="model"
+    )
+
+
+def model_sections(result: dict, graphs: dict) -> list:
+    """The sections of the case's transport, RTD and transverse models, with their figures
+    (``graphs``: model -> graph)."""
+    summary, models = result["summary"], result.get("models") or {}
+    sections = []
+    if "bed" in graphs or "transport_model" in summary:
+        sections.append(
+            html.Div(
+                [
+                    html.H3("Bed profile (transport model)"),
+                    _table(bed_rows(summary), "model-table"),
+                    *([graphs["bed"]] if "bed" in graphs else []),
+                ],
+                id="bed-profile",
+                className="model",
+            )
         )
+    if "rtd" in graphs or "rtd_model" in summary:
+        sections.append(
+            html.Div(
+                [
+                    html.H3("Residence time distribution (predicted)"),
+                    _table(rtd_rows(summary), "model-table"),
+                    *([graphs["rtd"]] if "rtd" in graphs else []),
+                ],
+                id="rtd",
+                className="model",
+            )
+        )
+    if models.get("transverse"):
+        sections.append(_transverse_section(models["transverse"], graphs.get("transverse")))
+    return sections
+
+
+def results_view(
+    result: dict,
+    outlet: tuple[str, float] | None,
+    figures: list,
+    graphs: dict | None = None,
+) -> list:
+    """The results panel of one run (``result``: :meth:`RunResult.to_json`; ``figures``: the
+    kiln's; ``graphs``: the other models' by name, ``bed``, ``rtd``, ``transverse``)."""
+    graphs = graphs or {}
+    run_id = result["run_id"]
+    summary = result["summary"]
     links = (
         [
             html.A(
@@ -237,12 +330,20 @@ def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) 
         for name in result["files"]
         if name.endswith(".png")
     ]
+    sections = model_sections(result, graphs)
+    models = result.get("models") or {}
     return [
         html.H2(result["name"], id="result-title"),
-        headline,
+        _headline(result, outlet),
+        html.P(
+            models_run(summary, models, bool(result["profiles"])),
+            className="muted small",
+            id="models-run",
+        ),
         _table(key_figures(summary), "key-figures"),
         warnings,
         *figures,
+        *sections,
         html.H3("Downloads"),
         html.Div(links),
         downloads,
@@ -253,6 +354,6 @@ def results_view(result: dict, outlet: tuple[str, float] | None, figures: list) 
         html.Details(
             [html.Summary("Figures of the run"), *images],
             className="run-figures",
-            open=not figures,  # the only figures when there is no profile to draw
+            open=not (figures or graphs),  # the only figures when there is nothing to draw
         ),
     ]

@@ -10,7 +10,8 @@ most :data:`~rotarykiln.app.checks.MAX_APP_CELLS` cells, :data:`MAX_RUN_SECONDS`
 (:class:`ServerBusy`) instead of waiting. Light runs (at most :data:`LIGHT_CELLS` cells, such
 as every built-in case) have a lane of their own and are served first, so that heavy runs never
 hold one up for more than the run in progress. The page gets the profiles thinned to
-:data:`MAX_SHOWN_POINTS` rows (the tables for download keep every cell).
+:data:`MAX_SHOWN_POINTS` rows (the tables for download keep every cell), and the results of the
+case's other models (bed profile, RTD, transverse results: :mod:`rotarykiln.app.results`).
 """
 
 from __future__ import annotations
@@ -89,7 +90,8 @@ def outlet_temperature(summary: dict) -> tuple[str, float] | None:
 
 @dataclass
 class RunResult:
-    """What one run gives the page: summary, profiles, warnings and the files written."""
+    """What one run gives the page: summary, kiln profiles, the results of the other models
+    (``models``: ``bed``, ``rtd``, ``transverse``), warnings and the files written."""
 
     run_id: str
     name: str
@@ -97,6 +99,7 @@ class RunResult:
     profiles: dict[str, dict[str, list]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     files: list[str] = field(default_factory=list)
+    models: dict[str, Any] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         """Plain data for the page (non-finite numbers as None)."""
@@ -106,6 +109,7 @@ class RunResult:
                 "name": self.name,
                 "summary": self.summary,
                 "profiles": self.profiles,
+                "models": self.models,
                 "warnings": self.warnings,
                 "files": self.files,
             }
@@ -273,7 +277,7 @@ class RunStore:
             out = self.root / run_id
             out.mkdir()
             try:
-                caught = self._in_worker(raw, out, source)
+                answer = self._in_worker(raw, out, source)
             except BaseException:
                 shutil.rmtree(out, ignore_errors=True)
                 raise
@@ -286,13 +290,14 @@ class RunStore:
         return RunResult(
             run_id=run_id,
             name=str(summary.get("name") or source),
-            summary=summary,
+            summary=_file_names(summary, out),
             profiles=profiles,
-            warnings=caught,
+            warnings=list(answer.get("warnings") or []),
             files=files,
+            models=dict(answer.get("models") or {}),
         )
 
-    def _in_worker(self, raw: dict, out: Path, source: str) -> list[str]:
+    def _in_worker(self, raw: dict, out: Path, source: str) -> dict:
         """Run in the worker (one is started when there is none); a worker stopped, ended or
         grown large is replaced at the next run."""
         self.start()
@@ -307,6 +312,20 @@ class RunStore:
 
 
 _ORDER = {".html": 0, ".yaml": 1, ".csv": 2, ".json": 3, ".txt": 4, ".png": 5, ".svg": 5}
+
+
+def _file_names(summary: dict, out: Path) -> dict:
+    """The summary with the paths of the run's files (``transport_profile_csv``) as their
+    names: the page shows no path of the server's.
+
+    >>> _file_names({"a_csv": "/tmp/x/1/a.csv", "n": 1}, Path("/tmp/x/1"))
+    {'a_csv': 'a.csv', 'n': 1}
+    """
+    folder = str(out)
+    return {
+        k: Path(v).name if isinstance(v, str) and v.startswith(folder) else v
+        for k, v in summary.items()
+    }
 
 
 def _files(out: Path) -> list[str]:

@@ -8,7 +8,8 @@ CSS = """
 body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", "DejaVu Sans", sans-serif;
        color: #1f2328; background: #f4f5f7; }
 .page { max-width: 1400px; margin: 0 auto; padding: 0 16px 32px; }
-.top { display: flex; align-items: baseline; gap: 16px; padding: 14px 0 10px; }
+.top { display: flex; flex-wrap: wrap; align-items: baseline; gap: 4px 16px;
+       padding: 14px 0 10px; }
 .top h1 { margin: 0; font-size: 24px; color: #6b3d2e; }
 .inputs-panel { position: sticky; top: 8px; max-height: calc(100vh - 64px); overflow-y: auto;
                 padding-bottom: 0; }
@@ -16,11 +17,12 @@ body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", "DejaVu San
            border-top: 1px solid #eceef1; margin-top: 12px; }
 .stale:not(:empty) { background: #eef4fb; border-left: 3px solid #1a5fb4; padding: 6px 10px;
                      font-size: 14px; margin-bottom: 8px; }
-.columns { display: grid; grid-template-columns: minmax(300px, 380px) 1fr; gap: 16px;
-           align-items: start; }
-@media (max-width: 900px) { .columns { grid-template-columns: 1fr; }
+.columns { display: grid; grid-template-columns: minmax(300px, 380px) minmax(0, 1fr);
+           gap: 16px; align-items: start; }
+@media (max-width: 900px) { .columns { grid-template-columns: minmax(0, 1fr); }
                             .inputs-panel { position: static; max-height: none; } }
-.panel { background: #fff; border: 1px solid #d8dbe0; border-radius: 8px; padding: 14px 18px; }
+.panel { background: #fff; border: 1px solid #d8dbe0; border-radius: 8px; padding: 14px 18px;
+         min-width: 0; overflow-wrap: anywhere; }
 .panel h2 { font-size: 17px; margin: 8px 0 8px; }
 .panel h3 { font-size: 15px; margin: 18px 0 6px; }
 .muted { color: #5f6670; }
@@ -63,10 +65,17 @@ body { margin: 0; font-family: system-ui, -apple-system, "Segoe UI", "DejaVu San
             padding: 10px 16px; margin: 6px 0 10px; }
 .headline-label { font-size: 16px; color: #6b3d2e; font-weight: 600; }
 .headline-value { font-size: 32px; font-weight: 700; color: #6b3d2e;
-                  font-variant-numeric: tabular-nums; }
-table { border-collapse: collapse; font-size: 14px; }
+                  font-variant-numeric: tabular-nums; overflow-wrap: normal; }
+table { border-collapse: collapse; font-size: 14px; max-width: 100%; }
 th { text-align: left; font-weight: 500; padding: 3px 14px 3px 0; color: #3b4149; }
 td { padding: 3px 8px 3px 0; }
+th, td { overflow-wrap: anywhere; vertical-align: top; }
+.graph { width: 100%; min-width: 0; }
+.model { margin-top: 8px; }
+.model h4 { font-size: 14px; margin: 12px 0 4px; }
+.note { background: #eef4fb; border-left: 3px solid #1a5fb4; padding: 6px 10px; font-size: 14px; }
+code { font-family: ui-monospace, "DejaVu Sans Mono", monospace; font-size: 13px;
+       background: #f6f8fa; padding: 1px 4px; border-radius: 3px; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .key-figures { margin-bottom: 6px; }
 .warning { background: #fff8e1; border-left: 3px solid #e0a800; padding: 4px 8px;
@@ -76,6 +85,9 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .all-summary, .run-figures { margin-top: 12px; }
 .summary-table { margin-top: 6px; }
 .run-figure { max-width: 100%; display: block; margin: 8px 0; }
+@media (max-width: 520px) { .page { padding: 0 8px 24px; } .panel { padding: 10px 12px; }
+                            .headline { padding: 8px 12px; }
+                            .headline-value { font-size: 24px; } }
 """
 
 

@@ -1,5 +1,6 @@
-"""The summary of a run as a person reads it: the outlet temperature in words, and the summary
-entries (``heat_residence_time_s``) as label, value and unit."""
+"""The summary of a run as a person reads it: the outlet temperature in words, the summary
+entries (``heat_residence_time_s``) as label, value and unit, and the results of each model of
+the case (transport bed profile, RTD, transverse run) as rows with units."""
 
 from __future__ import annotations
 
@@ -9,14 +10,25 @@ from typing import Any
 
 __all__ = [
     "KEY_FIGURES",
+    "bed_rows",
     "format_kelvin",
     "format_value",
+    "headline",
     "key_figures",
+    "models_run",
+    "rtd_rows",
     "split_unit",
     "summary_rows",
+    "transverse_rows",
 ]
 
 _UNITS = (
+    ("_m2_s", "m²/s"),
+    ("_m_s", "m/s"),
+    ("_s2", "s²"),
+    ("_min", "min"),
+    ("_kg", "kg"),
+    ("_mm", "mm"),
     ("_W_m", "W/m"),
     ("_kg_s", "kg/s"),
     ("_kg_h", "kg/h"),
@@ -129,3 +141,167 @@ def key_figures(summary: dict) -> list[tuple[str, str, str]]:
                 continue
         rows.append((label, format_value(value, unit), unit))
     return rows
+
+
+Row = tuple[str, str, str]
+
+
+def _num(summary: dict, key: str) -> float | None:
+    value = summary.get(key)
+    if isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value):
+        return float(value)
+    return None
+
+
+def _rows(summary: dict, spec) -> list[Row]:
+    """Rows of the (label, key, scale, unit, format) entries a summary has."""
+    rows = []
+    for label, key, scale, unit, fmt in spec:
+        value = _num(summary, key)
+        if value is not None:
+            rows.append((label, format(scale * value, fmt), unit))
+    return rows
+
+
+def bed_rows(summary: dict) -> list[Row]:
+    """The transport model's bed: model, fills, hold-up and mean residence time, with units.
+
+    >>> bed_rows({"transport_model": "kramers", "transport_mean_fill": 0.0266,
+    ...           "transport_holdup_kg": 6.0088, "transport_mean_residence_time_min": 30.07})
+    [('Transport model', 'kramers', ''), ('Mean fill', '2.66', '%'), ('Hold-up', '6.009', 'kg'), ('Mean residence time', '30.1', 'min')]
+    """
+    rows: list[Row] = []
+    if summary.get("transport_model"):
+        rows.append(("Transport model", str(summary["transport_model"]), ""))
+    return rows + _rows(
+        summary,
+        (
+            ("Mean fill", "transport_mean_fill", 100, "%", ".3g"),
+            ("Fill at the discharge", "transport_discharge_fill", 100, "%", ".3g"),
+            ("Hold-up", "transport_holdup_kg", 1, "kg", ".4g"),
+            ("Mean residence time", "transport_mean_residence_time_min", 1, "min", ".1f"),
+        ),
+    )
+
+
+def rtd_rows(summary: dict) -> list[Row]:
+    """The predicted RTD's model and moments, with units (times in minutes).
+
+    >>> rtd_rows({"rtd_mean_residence_time_s": 2600.4, "rtd_variance_s2": 18142.0})[1:]
+    [('Variance, σ²', '5.04', 'min²'), ('Standard deviation, σ', '2.24', 'min'), ('Dimensionless variance, σ²/t̄²', '0.00268', '')]
+    """
+    rows: list[Row] = _rows(
+        summary, (("Mean residence time, t̄", "rtd_mean_residence_time_s", 1 / 60, "min", ".2f"),)
+    )
+    mean, variance = _num(summary, "rtd_mean_residence_time_s"), _num(summary, "rtd_variance_s2")
+    if variance is not None and variance >= 0:
+        rows.append(("Variance, σ²", f"{variance / 3600:.3g}", "min²"))
+        rows.append(("Standard deviation, σ", f"{math.sqrt(variance) / 60:.3g}", "min"))
+        if mean:
+            rows.append(("Dimensionless variance, σ²/t̄²", f"{variance / mean**2:.3g}", ""))
+    if summary.get("rtd_model"):
+        rows.append(("Dispersion model (boundaries)", str(summary["rtd_model"]), ""))
+    peclet = _num(summary, "rtd_peclet")
+    if peclet is not None:
+        source = summary.get("rtd_peclet_source")
+        rows.append(("Péclet number, Pe", f"{peclet:.4g}", f"from {source}" if source else ""))
+    return rows + _rows(
+        summary,
+        (
+            ("Space time, τ = L/u", "rtd_tau_s", 1 / 60, "min", ".2f"),
+            ("Axial dispersion, D", "rtd_dispersion_m2_s", 1, "m²/s", ".3g"),
+        ),
+    )
+
+
+def transverse_rows(summary: dict) -> list[Row]:
+    """The transverse run's results (``rotarykiln transverse``'s summary), with units.
+
+    >>> transverse_rows({"mixing_time_s": 37.105, "final_shale_temperature_K": 870.67})
+    [('Mixing time (95 % of the peak contact)', '37.1', 's'), ('Final shale temperature', '870.7', 'K')]
+    """
+    return _rows(
+        summary,
+        (
+            ("Mixing time (95 % of the peak contact)", "mixing_time_s", 1, "s", ".1f"),
+            ("Final shale temperature", "final_shale_temperature_K", 1, "K", ".1f"),
+            ("Final ash temperature", "final_ash_temperature_K", 1, "K", ".1f"),
+            ("Volatiles evolved at 30 s", "volatiles_at_30s_percent", 1, "%", ".2f"),
+            ("Volatiles evolved at the end", "final_volatiles_percent", 1, "%", ".2f"),
+            (
+                "Peak contact over the final contact",
+                "peak_contact_over_final_contact_percent",
+                1,
+                "%",
+                ".1f",
+            ),
+            ("Active-layer velocity", "active_layer_velocity_m_s", 1, "m/s", ".3g"),
+            ("Time step", "time_step_s", 1e3, "ms", ".3g"),
+            (
+                "Mass balance, largest relative error",
+                "mass_balance_max_relative_error",
+                1,
+                "",
+                ".2g",
+            ),
+            (
+                "Energy balance, largest relative error",
+                "energy_balance_max_relative_error",
+                1,
+                "",
+                ".2g",
+            ),
+        ),
+    )
+
+
+def models_run(summary: dict, models: dict, kiln: bool) -> str:
+    """The models a run ran, in one sentence.
+
+    >>> models_run({"regime": "rolling"}, {"rtd": {}}, False)
+    'Models of this case: the bed geometry and regime, the residence time distribution (rtd:).'
+    """
+    names = []
+    if "regime" in summary or "fill" in summary:
+        names.append("the bed geometry and regime")
+    if kiln:
+        names.append("the kiln's heat and mass balances")
+    if "transport_model" in summary or "bed" in models:
+        names.append("the transport model's bed profile (transport:)")
+    if "rtd_model" in summary or "rtd" in models:
+        names.append("the residence time distribution (rtd:)")
+    if "transverse" in models:
+        names.append("the transverse mixing and heating of the retort zone (transverse:)")
+    if not names:
+        return "This case has only the kiln's geometry: its summary is below."
+    return f"Models of this case: {', '.join(names)}."
+
+
+def headline(summary: dict, models: dict) -> tuple[str, str, str]:
+    """The headline of a run without a bed outlet temperature: (label, value, note), from the
+    case's models (RTD, transport, transverse run), else its bed regime.
+
+    >>> headline({"rtd_mean_residence_time_s": 2600.4, "rtd_peclet": 745.44}, {})
+    ('Mean residence time (RTD)', '43.3 min', 'Péclet number 745')
+    """
+    rtd_mean = _num(summary, "rtd_mean_residence_time_s")
+    if rtd_mean is not None:
+        peclet = _num(summary, "rtd_peclet")
+        note = f"Péclet number {peclet:.3g}" if peclet is not None else ""
+        return "Mean residence time (RTD)", f"{rtd_mean / 60:.1f} min", note
+    transport = _num(summary, "transport_mean_residence_time_min")
+    if transport is not None:
+        holdup = _num(summary, "transport_holdup_kg")
+        note = f"hold-up {holdup:.4g} kg" if holdup is not None else ""
+        return "Mean residence time (transport model)", f"{transport:.1f} min", note
+    result = (models.get("transverse") or {}).get("summary") or {}
+    mixing = _num(result, "mixing_time_s")
+    if mixing is not None:
+        shale = _num(result, "final_shale_temperature_K")
+        note = f"final shale temperature {format_kelvin(shale)}" if shale is not None else ""
+        return "Mixing time (transverse run)", f"{mixing:.1f} s", note
+    if summary.get("regime"):
+        froude = _num(summary, "froude")
+        note = f"Froude number {froude:.3g}" if froude is not None else ""
+        return "Bed regime", str(summary["regime"]), note
+    return "Case", str(summary.get("name") or ""), ""

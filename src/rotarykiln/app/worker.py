@@ -46,7 +46,8 @@ def process_rss(pid: int) -> int | None:
 
 
 class Worker:
-    """One process that runs cases as ``rotarykiln run --report`` does, one at a time."""
+    """One process that runs cases as ``rotarykiln run --report`` does, one at a time (and
+    the transverse section of a case as ``rotarykiln transverse`` does, within its bound)."""
 
     def __init__(self):
         ours, theirs = socket.socketpair()
@@ -78,8 +79,10 @@ class Worker:
     def alive(self) -> bool:
         return self.process.poll() is None
 
-    def run(self, raw: dict, out: Path, source: str, seconds: float, max_bytes: int) -> list[str]:
-        """Run a raw case into the folder ``out``; the texts of its warnings.
+    def run(self, raw: dict, out: Path, source: str, seconds: float, max_bytes: int) -> dict:
+        """Run a raw case into the folder ``out``; what the page shows beside the files:
+        ``warnings`` (their texts, as the models give them) and ``models`` (the results of its
+        transport, RTD and transverse models: :func:`rotarykiln.app.results.model_results`).
 
         Raises
         ------
@@ -181,24 +184,39 @@ def _run(raw: dict, out: str, source: str) -> tuple:
     return ("ok", caught)
 
 
-def _run_case(case, out: Path, source: str) -> list[str]:
-    """``run_case(..., report=True)`` with its warnings collected (not printed); their texts."""
+MAX_WARNINGS = 20
+"""Most warnings of a run sent to the page (each at most 2,000 characters)."""
+
+
+def _run_case(case, out: Path, source: str) -> dict:
+    """``run_case(..., report=True)``, then the results of the case's other models for the
+    page (:func:`rotarykiln.app.results.model_results`), with the warnings of both collected
+    (not printed): ``{"warnings": [texts], "models": {...}}``."""
+    from rotarykiln.app.results import model_results
     from rotarykiln.commands.run import run_case
 
     shown: list[str] = []
 
-    def collect(message, category, filename, lineno, file=None, line=None):
-        text = str(message)
-        if text not in shown:
+    def keep(message) -> None:
+        text = str(message)[:2000]
+        if text not in shown and len(shown) < MAX_WARNINGS:
             shown.append(text)
+
+    def collect(message, category, filename, lineno, file=None, line=None):
+        keep(message)
 
     previous = warnings.showwarning
     warnings.showwarning = collect
     try:
         run_case(case, out, report=True, source=source)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("default")  # once per place and text, in every run
+            models = model_results(case, out, source)
+        for w in caught:
+            keep(w.message)
     finally:
         warnings.showwarning = previous
-    return shown
+    return {"warnings": shown, "models": models}
 
 
 if __name__ == "__main__":  # python -m rotarykiln.app.worker FD PARENT_PID (started by Worker)

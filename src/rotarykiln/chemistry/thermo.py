@@ -175,7 +175,7 @@ class SpeciesThermo:
         """Warn (:class:`~rotarykiln.errors.OutOfRangeWarning`) if T leaves the fitted range."""
         from rotarykiln.errors import warn_out_of_range
 
-        warn_out_of_range(f"{name} temperature", T, self.T_low, self.T_high, f"{name} c_p fit")
+        warn_out_of_range(f"{name} temperature [K]", T, self.T_low, self.T_high, f"{name} c_p fit")
 
 
 def _numbers(field: str, value, n: int | None = None) -> list[float]:
