@@ -333,3 +333,28 @@ def test_a_missing_extra_names_the_pip_install(monkeypatch):
         require("SALib.sample.sobol", "a Sobol sensitivity study")
     text = str(info.value)
     assert 'pip install "rotarykiln[studies]"' in text and "\n" not in text
+
+
+def test_verbose_run_logs_its_steps_and_newton_iterations(tmp_path):
+    """``-v``: the models run, the kiln's Newton iterations and its balances, on stderr."""
+    import subprocess
+    import sys
+
+    out = subprocess.run(
+        [sys.executable, "-m", "rotarykiln", "-v", "run", "tscheng_A16", "--no-plots"]
+        + ["--out", str(tmp_path / "r")],
+        capture_output=True,
+        text=True,
+        env={**__import__("os").environ, "MPLBACKEND": "Agg"},
+    )
+    assert out.returncode == 0, out.stderr
+    assert "the kiln model" in out.stderr
+    assert "Newton iteration 1:" in out.stderr and "Newton converged in" in out.stderr
+    assert "kiln solved: bed out" in out.stderr
+    quiet = subprocess.run(
+        [sys.executable, "-m", "rotarykiln", "run", "tscheng_A16", "--no-plots"]
+        + ["--out", str(tmp_path / "q")],
+        capture_output=True,
+        text=True,
+    )
+    assert "Newton" not in quiet.stderr

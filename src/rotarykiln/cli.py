@@ -60,6 +60,15 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
+class _Version(argparse.Action):
+    """``--version``: the installed version, read from the package metadata only when asked."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from rotarykiln import __version__
+
+        parser.exit(0, f"rotarykiln {__version__}\n")
+
+
 def command_of(argv: list[str] | None) -> str | None:
     """The subcommand named in ``argv`` (the first word after the global options), else None."""
     for word in sys.argv[1:] if argv is None else argv:
@@ -72,14 +81,12 @@ def command_of(argv: list[str] | None) -> str | None:
 def build_parser(command: str | None = "*") -> argparse.ArgumentParser:
     """The ``rotarykiln`` parser with the subcommand ``command`` registered in full ("*": all of
     them; None: none, each listed by its help line only, which imports no command module)."""
-    from rotarykiln import __version__
-
     parser = _Parser(
         prog="rotarykiln",
         description="Simulate rotary kilns and rotating drums. Quantities take units: "
         '"--diameter 0.4 m --speed 1.5 rpm --slope 2 deg --feed 62 kg/h".',
     )
-    parser.add_argument("--version", action="version", version=f"rotarykiln {__version__}")
+    parser.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
     parser.add_argument(
         "-v",
         "--verbose",

@@ -22,9 +22,12 @@ areas in m2) and broadcast over their arguments.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import check_positive, check_range
 from rotarykiln.tables import with_units
@@ -624,6 +627,8 @@ class CrossSection:
             k: np.atleast_1d(np.broadcast_to(v, np.broadcast(*self.as_dict().values()).shape))
             for k, v in self.as_dict().items()
         }
+        import pandas as pd
+
         return with_units(pd.DataFrame(data), "geometry.cross_section")
 
     def plot(self, ax=None):

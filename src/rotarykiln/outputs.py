@@ -25,10 +25,12 @@ import threading
 import warnings
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:  # pandas is imported by the callers that write tables
+    import pandas as pd
 
 from rotarykiln.errors import InputError
 

@@ -29,9 +29,12 @@ Mellmann bands call it cascading, Henein's band calls it rolling (seed 000 model
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, check_range
 from rotarykiln.tables import with_units
@@ -278,6 +281,8 @@ class RegimeResult:
 
     def to_frame(self) -> pd.DataFrame:
         shape = np.broadcast(self.name, self.froude, self.fill).shape
+        import pandas as pd
+
         frame = pd.DataFrame(
             {
                 "regime": np.broadcast_to(self.name, shape).ravel(),

@@ -16,10 +16,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
-from scipy.integrate import solve_ivp
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.chemistry.balance import check_stream_balance
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
@@ -137,6 +139,8 @@ class PlugFlowResult:
         for j, g in enumerate(self.gas_species):
             cols[f"released_{g}_kg_s"] = self.gas_released[:, j]
         cols["heat_absorbed_W"] = self.heat_absorbed
+        import pandas as pd
+
         return with_units(pd.DataFrame(cols), "chemistry.plugflow")
 
     def plot(self, ax=None):
@@ -268,6 +272,8 @@ def integrate_plug_flow(
 
     y0 = np.concatenate([q0, np.zeros(len(gas)), [0.0]])
     z_eval = np.linspace(0.0, float(length), int(n_points))
+    from scipy.integrate import solve_ivp
+
     sol = solve_ivp(
         rhs,
         (0.0, float(length)),

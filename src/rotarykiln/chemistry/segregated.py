@@ -24,13 +24,16 @@ from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from scipy.integrate import trapezoid
 
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
 from rotarykiln.chemistry.plugflow import as_profile
 from rotarykiln.errors import ConvergenceError, InputError, check_nonnegative, check_positive
 from rotarykiln.progress import progress_bar
 from rotarykiln.tables import with_units
+
+# numpy's trapezoid rule gives the same numbers as scipy.integrate.trapezoid, which would import
+# scipy.optimize and scipy.special with it
+trapezoid = np.trapezoid
 
 __all__ = [
     "SegregatedResult",

@@ -67,11 +67,18 @@ def solve_case(case) -> dict:
         :data:`RUNNERS` (the transport bed profile first: it feeds the kiln's fill and the
         RTD's mean residence time).
     """
+    import logging
+    import time
+
+    log = logging.getLogger(__name__)
     runs = {}
     for model, target in RUNNERS.items():
         if wants(case, model):
             module, func = target.split(":")
+            log.info("%s: the %s model", case.name, model)
+            t0 = time.perf_counter()
             runs[model] = getattr(importlib.import_module(module), func)(case)
+            log.info("%s: the %s model done in %.3g s", case.name, model, time.perf_counter() - t0)
     return runs
 
 

@@ -387,41 +387,11 @@ def hawthorne_flame_length(
 
 @lru_cache(maxsize=64)
 def _fuel_data(fuel: tuple[tuple[str, float], ...]):
-    """Molar mass (kg/mol), O2 demand (mol/mol), LHV and HHV (J/kg) of a fuel at 298.15 K."""
-    import cantera as ct
+    """Molar mass (kg/mol), O2 demand (mol/mol), LHV and HHV (J/kg) of a fuel at 298.15 K
+    (:func:`rotarykiln.materials.gas.fuel_data`: computed once per fuel, cached)."""
+    from rotarykiln.materials.gas import fuel_data
 
-    gas = ct.Solution(MECHANISM)
-    x = dict(fuel)
-    gas.TPX = T_REF, 101325.0, x
-    mm = gas.mean_molecular_weight / 1000.0
-    o2 = 0.0
-    c = h = 0.0
-    for name, xi in x.items():
-        k = gas.species_index(name)
-        nc = gas.n_atoms(k, "C") if "C" in gas.element_names else 0.0
-        nh = gas.n_atoms(k, "H")
-        no = gas.n_atoms(k, "O")
-        o2 += xi * (nc + nh / 4.0 - no / 2.0)
-        c += xi * nc
-        h += xi * nh
-    h_fuel = gas.enthalpy_mole  # J/kmol
-    prod = ct.Solution(MECHANISM)
-    n_o2 = gas.n_atoms(gas.species_index("O2"), "O") / 2.0  # 1
-    comp = {"CO2": c, "H2O": h / 2.0}
-    for name, xi in x.items():
-        if name in ("N2", "AR", "Ar", "HE"):
-            comp[name] = comp.get(name, 0.0) + xi
-        if name == "CO2":
-            pass  # already counted in c
-    total = sum(comp.values())
-    prod.TPX = T_REF, 101325.0, {k: v / total for k, v in comp.items() if v > 0}
-    h_prod = prod.enthalpy_mole * total
-    o2gas = ct.Solution(MECHANISM)
-    o2gas.TPX = T_REF, 101325.0, "O2:1"
-    h_react = h_fuel + o2 * o2gas.enthalpy_mole * n_o2
-    lhv = (h_react - h_prod) / 1000.0 / mm  # J/kg of fuel
-    hhv = lhv + (h / 2.0) * H2O_VAPORISATION / mm
-    return mm, o2, lhv, hhv
+    return fuel_data(fuel)
 
 
 def heating_values(fuel) -> tuple[float, float]:

@@ -11,6 +11,7 @@ residual norm and limited to ``max_step`` kelvin per unknown.
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -18,6 +19,8 @@ import numpy as np
 from scipy.linalg import solve_banded
 
 from rotarykiln.errors import ConvergenceError
+
+log = logging.getLogger(__name__)
 
 __all__ = ["NewtonReport", "newton_banded"]
 
@@ -144,8 +147,10 @@ def newton_banded(
     norm = float(np.max(np.abs(R))) / scale
     history = [norm]
     n_jac = 0
+    log.info("Newton on %d cells x %d unknowns: residual %.3g (tolerance %.3g)", n, nv, norm, tol)
     for it in range(1, max_iter + 1):
         if norm <= tol:
+            log.info("Newton converged in %d iterations: residual %.3g", it - 1, norm)
             return x, NewtonReport(it - 1, norm, tuple(history), n_jac)
         if not np.isfinite(norm):
             break
@@ -184,6 +189,7 @@ def newton_banded(
                 break
         x, R, norm = xt, Rt, nt_norm
         history.append(norm)
+        log.info("  Newton iteration %d: residual %.3g (step %.3g)", it, norm, lam)
     j, v = (
         np.unravel_index(int(np.argmax(np.abs(R))), R.shape) if np.all(np.isfinite(R)) else (0, 0)
     )

@@ -9,6 +9,7 @@ residence-time effects with ``kiln_rtd.png``).
 
 from __future__ import annotations
 
+import logging
 import warnings
 from pathlib import Path
 
@@ -17,6 +18,8 @@ from rotarykiln.kiln.build import kiln_from_case
 from rotarykiln.kiln.coupling import ModelRun
 from rotarykiln.kiln.solution import KilnSolution
 from rotarykiln.kiln.solve import solve_kiln
+
+log = logging.getLogger(__name__)
 
 __all__ = ["kiln_run", "kiln_runner", "run_kiln_case"]
 
@@ -65,11 +68,26 @@ def kiln_run(case) -> ModelRun:
     from rotarykiln.kiln.residence import fed_reactant, residence_time_effects
 
     kiln, cells = kiln_from_case(case)
+    log.info(
+        "kiln model: %d cells, %s",
+        cells,
+        "counter-current" if kiln.counter_current else "co-current",
+    )
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")  # every closure's check: grouped below
         sol = solve_kiln(kiln, cells)
         # nothing fed reacts: no residence-time effect to show
         rtd = None if fed_reactant(kiln) is None else residence_time_effects(case, kiln, sol)
+    log.info(
+        "kiln solved: bed out %.1f K, gas out %.1f K, heat to solids %.4g W, energy closure %.2g, "
+        "elements %.2g, %d Newton iterations",
+        sol.bed_outlet_temperature,
+        sol.gas_outlet_temperature,
+        sol.heat_to_solids,
+        sol.energy_closure,
+        max(sol.element_closure.values(), default=0.0),
+        sol.iterations,
+    )
     # one warning per closure out of its range, with the heat flow it feeds and its share
     shown = closure_warnings.emit(caught, sol, case)
     extra = rtd.summary() if rtd is not None else {}

@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.kiln.profiles import heat_flow_columns, plot_temperature_profiles
@@ -277,6 +280,8 @@ class KilnSolution:
         for r, v in self.reaction_rates.items():
             data[f"rate_{r}_kg_s_m"] = np.interp(self.z_nodes, self.z, v)
         data.update(heat_flow_columns(self.fluxes, lambda v: np.interp(self.z_nodes, self.z, v)))
+        import pandas as pd
+
         return with_units(pd.DataFrame(data), "kiln")
 
     def plot(self, ax=None):

@@ -15,12 +15,15 @@
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from rotarykiln.errors import ConvergenceError
 from rotarykiln.kiln import newton
+
+log = logging.getLogger(__name__)
 
 __all__ = [
     "initial_temperatures",
@@ -88,6 +91,7 @@ def ramp(set_parameter: Callable[[float], None], steps=FIXED_STEPS, *, adaptive=
         total = 0
         for value in steps:
             set_parameter(value)
+            log.info("continuation: parameter %.4g", value)
             x, rep = newton.newton_banded(F, x, scale, **kw)
             total += rep.iterations
         return x, total
@@ -97,6 +101,7 @@ def ramp(set_parameter: Callable[[float], None], steps=FIXED_STEPS, *, adaptive=
         while lam < 1.0:
             trial = min(1.0, lam + step)
             set_parameter(trial)
+            log.info("continuation: parameter %.4g (step %.4g)", trial, step)
             try:
                 x_new, rep = newton.newton_banded(F, x, scale, **kw)
             except ConvergenceError:
@@ -122,7 +127,8 @@ def newton_with_continuation(F, x0, scale, continuation, **kw):
     try:
         x, rep = newton.newton_banded(F, x0, scale, **kw)
         return x, rep.iterations
-    except ConvergenceError:
+    except ConvergenceError as exc:
+        log.info("Newton failed (%s): continuation", exc)
         return continuation(F, np.array(x0, dtype=float), scale, kw)
 
 
@@ -210,6 +216,7 @@ def newton_sequenced(
                 return None
 
         C = make_residual(max(F.n // ratio, 4))
+        log.info("grid sequencing: a start from %d cells for %d", C.n, F.n)
         xc = solved(C, interpolate_unknowns(F, np.asarray(x0, dtype=float), C))
         if xc is not None:
             try:

@@ -13,6 +13,7 @@ bar (tqdm, on stderr) shows done / failed / remaining and the rate.
 
 from __future__ import annotations
 
+import logging
 import math
 import numbers
 import os
@@ -34,6 +35,8 @@ from rotarykiln.studies.design import CaseSpec, si_value
 from rotarykiln.studies.paths import get_path, with_values
 from rotarykiln.studies.result import SI_SUFFIX, SweepResult
 from rotarykiln.studies.store import FIXED_COLUMNS, ResultStore, case_hash
+
+log = logging.getLogger(__name__)
 
 __all__ = ["run_sweep", "run_case", "EXECUTORS", "model_id", "dask_client"]
 
@@ -173,17 +176,27 @@ def _watch_parent(parent: int, ppid: int) -> None:
             os._exit(1)
 
 
-def _worker_init(parent: int) -> None:
+def _worker_init(parent: int, log_level: int = logging.NOTSET) -> None:
     """Pool initializer: Ctrl-C is left to the parent (which saves and stops the workers), and
     the worker dies with its parent (no orphan keeps computing or idling when the sweep is
-    killed)."""
+    killed); with the parent's log level (``-v``), the worker's solves log on stderr too."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     _die_with_parent(parent)
+    if log_level and not logging.getLogger("rotarykiln").handlers:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(
+            logging.Formatter(f"%(levelname)s worker {os.getpid()} %(name)s: %(message)s")
+        )
+        logger = logging.getLogger("rotarykiln")
+        logger.addHandler(handler)
+        logger.setLevel(log_level)
 
 
 def _pool(workers: int) -> ProcessPoolExecutor:
+    level = logging.getLogger("rotarykiln").getEffectiveLevel()
+    level = level if level < logging.WARNING else logging.NOTSET
     return ProcessPoolExecutor(
-        max_workers=workers, initializer=_worker_init, initargs=(os.getpid(),)
+        max_workers=workers, initializer=_worker_init, initargs=(os.getpid(), level)
     )
 
 
@@ -570,6 +583,15 @@ def run_sweep(
     last_flush = time.monotonic()
     failed_before = 0
     bar = _Progress(len(cases), reused, failed_before, progress, "sweep")
+    log.info(
+        "sweep: %d cases (%d stored already, %d to run in %d chunks), executor %s, %s workers",
+        len(cases),
+        reused,
+        len(unique),
+        len(chunks),
+        executor,
+        workers,
+    )
     try:
         if not unique:
             rows: Iterator[dict] = iter(())
@@ -587,6 +609,14 @@ def run_sweep(
             rec = _record(row, spec, hashes[spec.case_id], base_values)
             records[rec["hash"]] = rec
             bar.update(rec["error"] != "")
+            log.info(
+                "case %s (%d of %d): %s in %.3g s",
+                spec.case_id,
+                bar.done,
+                len(cases),
+                f"failed: {rec['error']}" if rec["error"] else "done",
+                rec["elapsed_s"],
+            )
             if st is not None:
                 buffer.append(rec)
                 if len(buffer) >= flush_every or time.monotonic() - last_flush > flush_seconds:
