@@ -384,6 +384,20 @@ def wsgg_bands(model, p_h2o, p_co2, path_length) -> WsggBands:
     :func:`smith_wsgg_emissivity` (``pw/pc=2``) exactly; at a surface temperature they give
     the absorptivity :math:`\alpha_g(T_s) = \sum_i a_i(T_s)[1 - e^{-\kappa_i pL}]`.
 
+    Parameters
+    ----------
+    model : str, -
+        ``johansson2011`` or ``smith1982``.
+    p_h2o, p_co2 : float or array, Pa
+        Partial pressures of water vapour and carbon dioxide.
+    path_length : float or array, m
+        Mean beam length of the freeboard.
+
+    Returns
+    -------
+    WsggBands, -
+        The grey gases: their emissivities (-) and weights at any temperature (K).
+
     Examples
     --------
     >>> p = 0.1 * 101325

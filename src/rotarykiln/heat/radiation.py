@@ -147,11 +147,32 @@ def freeboard_radiation_paths(
     The net heat absorbed by the wall is ``gas_wall - wall_bed``, by the bed
     ``gas_bed + wall_bed``.
 
+    Parameters
+    ----------
+    t_gas, t_wall, t_bed : float or array, K
+    eps_gas : float or array, -
+        Grey gas emissivity (unused with ``bands``).
+    eps_wall, eps_bed : float or array, -
+        Grey surface emissivities in (0, 1].
+    wall_area, bed_area : float or array, m2/m
+    bands : WsggBands or None, -
+        The grey gases of a WSGG model at the gas state, or None (one grey gas).
+
+    Returns
+    -------
+    gas_wall, gas_bed, wall_bed : float or array, W/m
+        The three path flows; their signs follow the temperature differences.
+
     Examples
     --------
     >>> gw, gb, wb = freeboard_radiation_paths(1000.0, 1200.0, 900.0, 0.0, 0.8, 1.0, 2.0, 0.5)
     >>> abs(float(gw)), float(gb), round(float(wb), 0)
     (0.0, 0.0, 37825.0)
+
+    References
+    ----------
+    H.C. Hottel, A.F. Sarofim, Radiative Transfer (1967), the enclosure network; M.F. Modest,
+    Radiative Heat Transfer, 3rd ed. (2013), section 11.10.
     """
     s = STEFAN_BOLTZMANN
     tg, tw, tb = (np.asarray(t, dtype=float) for t in (t_gas, t_wall, t_bed))
@@ -198,11 +219,11 @@ def freeboard_radiation_bands(
 
     The grey network of :func:`freeboard_radiation` solved once for every grey gas of a WSGG
     model and once for its windows (the clear gas), and summed (Modest 2013, section 11.10):
-    in grey gas *i* (emissivity :math:`arepsilon_i = 1 - e^{-\kappa_i pL}`) the gas emits
+    in grey gas *i* (emissivity :math:`\varepsilon_i = 1 - e^{-\kappa_i pL}`) the gas emits
     :math:`a_i(T_g)\sigma T_g^4` and each surface :math:`a_i(T_s)\sigma T_s^4`; in the windows
     (weight :math:`1 - \sum_i a_i(T)`) the gas is transparent. The weights at the surface
     temperature make the gas absorb the surface radiation with the absorptivity
-    :math:`lpha_g(T_s) = \sum_i a_i(T_s)arepsilon_i` (Hottel's absorptivity in WSGG form),
+    :math:`\alpha_g(T_s) = \sum_i a_i(T_s)\varepsilon_i` (Hottel's absorptivity in WSGG form),
     not with its emissivity at the gas temperature; and the gas radiation that a grey
     surface reflects stays in the bands the gas absorbs. With grey surfaces and one band of
     weight 1 it is :func:`freeboard_radiation`.
@@ -210,7 +231,7 @@ def freeboard_radiation_bands(
     Parameters
     ----------
     t_gas, t_wall, t_bed : float or array, K
-    bands : :class:`~rotarykiln.heat.gas_radiation.WsggBands`
+    bands : :class:`~rotarykiln.heat.gas_radiation.WsggBands`, -
         The grey gases at the gas state (emissivities shaped ``(n_gases,) + cells``).
     eps_wall, eps_bed : float or array, -
         Grey surface emissivities in (0, 1].

@@ -166,11 +166,11 @@ def jacket_radiation_conductance(
     Two parallel paths (VDI Heat Atlas K1; Hottel's re-radiating surface): the gas radiates to
     the drum directly, and the casing, heated by the gas by convection and losing little to the
     outside, re-radiates to the drum. Linearised about the mean temperature
-    :math:`ar T = (T_g + T_d)/2`, with :math:`h_r = 4\sigmaar T^3`:
+    :math:`\bar T = (T_g + T_d)/2`, with :math:`h_r = 4\sigma\bar T^3`:
 
-    .. math:: G_{gas} = arepsilon_g h_r P_d,\qquad
-              G_{casing} = rac{h_r}{rac{1 - arepsilon_d}{arepsilon_d P_d} + rac{1}{P_d}
-              + rac{1 - arepsilon_c}{arepsilon_c P_c}}
+    .. math:: G_{gas} = \varepsilon_g h_r P_d,\qquad
+              G_{casing} = \frac{h_r}{\frac{1 - \varepsilon_d}{\varepsilon_d P_d} + \frac{1}{P_d}
+              + \frac{1 - \varepsilon_c}{\varepsilon_c P_c}}
 
     :math:`G_{casing}` is in series with the gas-to-casing convection (see :class:`JacketWall`).
 
