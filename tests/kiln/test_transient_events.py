@@ -90,6 +90,19 @@ def test_transient_command(tmp_path, capsys):
     assert rc == 2 and "events[0].at" in err and len(err.splitlines()) == 1
 
 
+def test_transient_without_pyarrow_writes_its_profiles_as_csv(tmp_path, monkeypatch):
+    """A light install (no ``studies`` extra): the same table as CSV, not a pyarrow error."""
+    import sys
+
+    monkeypatch.setitem(sys.modules, "pyarrow", None)  # import pyarrow -> ImportError
+    out = tmp_path / "out"
+    argv = ["transient", "tscheng_A16", "--until", "20 min", "--cells", "8"]
+    assert main(argv + ["--out", str(out), "--no-plots"]) == 0
+    frame = pd.read_csv(out / "transient_profiles.csv")
+    assert {"t_s", "z_m", "T_bed_K"} <= set(frame.columns) and len(frame) > 8
+    assert not (out / "transient_profiles.parquet").exists()
+
+
 def test_a_new_burner_state_enters_with_the_energy_of_its_flame_in_the_starting_tables():
     # the transient's gas tables carry the dissociation heat of the flame it starts with; a
     # fuel step changes the products, which must enter with their own energy in those tables

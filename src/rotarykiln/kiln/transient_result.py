@@ -263,7 +263,8 @@ class TransientSolution:
         return fig
 
     def write(self, out, *, plots: bool = True) -> dict:
-        """Write ``transient_profiles.parquet`` (every variable against z and t),
+        """Write ``transient_profiles.parquet`` (every variable against z and t; as
+        ``transient_profiles.csv`` when pyarrow, of ``rotarykiln[studies]``, is not installed),
         ``transient_outlets.csv``, ``transient_summary.json`` and the figures into ``out``."""
         import matplotlib.pyplot as plt
 
@@ -276,7 +277,14 @@ class TransientSolution:
 
         out = Path(out)
         frame = self.to_frame()
-        atomic_path(out / "transient_profiles.parquet", lambda p: frame.to_parquet(p, index=False))
+        try:
+            import pyarrow  # noqa: F401 - Parquet, compact for a long run
+        except ImportError:  # a light install: the same table as CSV
+            write_frame_atomic(out / "transient_profiles.csv", frame, index=False)
+        else:
+            atomic_path(
+                out / "transient_profiles.parquet", lambda p: frame.to_parquet(p, index=False)
+            )
         write_frame_atomic(out / "transient_outlets.csv", self.outlet_frame())
         summary = self.summary()
         write_json_atomic(out / "transient_summary.json", summary)
