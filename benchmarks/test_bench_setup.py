@@ -91,3 +91,16 @@ def test_bench_run_barr_T4_process(benchmark, tmp_path):
 
     done = benchmark.pedantic(run, rounds=7, iterations=1)
     assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("argv", [["--version"], ["--help"]], ids=["version", "help"])
+def test_bench_version_and_help_process(benchmark, argv):
+    """``rotarykiln --version`` and ``--help`` as whole processes (target <= 0.5 s): no command
+    module, numpy or pint is imported for them."""
+    cmd = [sys.executable, "-m", "rotarykiln", *argv]
+
+    def run():
+        return subprocess.run(cmd, capture_output=True, text=True)
+
+    done = benchmark.pedantic(run, rounds=9, iterations=1)
+    assert done.returncode == 0 and "rotarykiln" in done.stdout
