@@ -445,6 +445,22 @@ class Burner(Section):
             raise PydanticCustomError(
                 "number", "fuel without air: the air flows sum to 0 (a flame needs air)", {}
             )
+        from rotarykiln.materials.gas import fuel_data, parse_composition
+
+        o2_demand = fuel_data(parse_composition(self.fuel))[1]  # mol O2 per mol of fuel
+        stoichiometric = fuel / molar_mass(self.fuel) * o2_demand / 0.21 * air_mm  # kg/s
+        if prim + sec < stoichiometric * (1.0 - 1e-9):
+            raise PydanticCustomError(
+                "number",
+                "the air streams cannot burn the fuel: primary + secondary air {air} kg/h "
+                "against {need} kg/h for complete combustion (an air ratio of {ratio}); "
+                "accepted: an air ratio of at least 1 (more air, or less fuel)",
+                {
+                    "air": f"{(prim + sec) * 3600:.4g}",
+                    "need": f"{stoichiometric * 3600:.4g}",
+                    "ratio": f"{(prim + sec) / stoichiometric:.3g}",
+                },
+            )
         return fuel, prim, sec
 
 

@@ -102,3 +102,27 @@ def test_heat_gas_composition_checked_at_load():
     data["gas"]["composition"] = "O2:0.21, N2:nan"
     with pytest.raises(InputError, match="gas.composition"):
         parse_case(data)
+
+
+def test_air_streams_that_cannot_burn_the_fuel_are_refused_at_load():
+    """Primary + secondary air below the fuel's stoichiometric air: one line naming the burner,
+    the two flows and the air ratio; the built-in fired cases (air ratio > 1) load."""
+    import yaml
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.errors import InputError
+
+    raw = yaml.safe_load(builtin_case_path("barr_T4").read_text())
+    raw["burner"]["primary_air"]["flow"] = "1.0 L/s"
+    raw["burner"]["secondary_air"]["flow"] = "2.0 L/s"
+    with pytest.raises(InputError) as info:
+        parse_case(raw)
+    text = str(info.value)
+    assert "burner" in text and "cannot burn the fuel" in text and "\n" not in text
+    assert "air ratio of 0.16" in text  # 3 L/s of air for 1.97 L/s of CH4 (9.52 needed a litre)
+    raw["burner"]["secondary_air"]["flow"] = "17.5 L/s"  # 18.5 L/s: just under 9.52 x 1.97
+    with pytest.raises(InputError, match="cannot burn the fuel"):
+        parse_case(raw)
+    raw["burner"]["secondary_air"]["flow"] = "18.0 L/s"  # 19.0 L/s: an air ratio of 1.01
+    assert parse_case(raw).burner is not None
