@@ -172,3 +172,21 @@ def test_empty_case_file(tmp_path):
     p.write_text("")
     with pytest.raises(InputError, match="empty.yaml: the case is empty"):
         load_case(p)
+
+
+@pytest.mark.parametrize("value", [1e-308, 1e300])
+def test_a_bed_peclet_number_outside_the_rtd_models_range_is_refused_at_load(value):
+    """A Peclet number of 1e-308 reached the kiln's Newton as NaN at its first step (the case
+    fuzz campaign): the bed's and the RTD section's Peclet numbers take the RTD models' range."""
+    import yaml
+
+    from rotarykiln.case import PECLET_RANGE, parse_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.errors import InputError
+    from rotarykiln.rtd.dispersion import SHAPE_RANGE
+
+    assert PECLET_RANGE == SHAPE_RANGE
+    raw = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
+    raw.setdefault("bed", {})["axial_dispersion"] = value
+    with pytest.raises(InputError, match=r"bed.axial_dispersion: .* is not in \[1e-06, 1e\+10\]"):
+        parse_case(raw)

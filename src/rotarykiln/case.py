@@ -261,6 +261,22 @@ def _positive_number(v: Any) -> float:
     return float(v)
 
 
+#: Peclet numbers (u L / D) the kiln and RTD models accept: the RTD models' own range
+#: (:data:`rotarykiln.rtd.dispersion.SHAPE_RANGE`); beyond it the bed is plug flow or well mixed.
+PECLET_RANGE = (1e-6, 1e10)
+
+
+def _peclet(v: Any) -> float:
+    x = _positive_number(v)
+    if not PECLET_RANGE[0] <= x <= PECLET_RANGE[1]:
+        raise PydanticCustomError(
+            "number",
+            "{value} is not in [1e-06, 1e+10] (a Peclet number u L / D)",
+            {"value": v},
+        )
+    return x
+
+
 def _library_name(filename: str):
     """A validator: the value must be an entry of the material library ``filename``."""
 
@@ -786,7 +802,7 @@ class Chemistry(Section):
     kirchhoff: bool = False
     onset_width: Annotated[float, BeforeValidator(lambda v: _nonnegative_number(v))] = 0.0
     gas_gain_per_carbon: Literal["corrected", "faithful"] = "corrected"
-    peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    peclet: Annotated[float, BeforeValidator(lambda v: _peclet(v))] | None = None
     expected: dict[str, Any] = {}
 
 
@@ -821,8 +837,7 @@ class Bed(Section):
     fill: FillFraction | list[FillFraction] | None = None
     residence_time: Time | None = None
     axial_dispersion: (
-        Literal["sherritt2003", "plug"]
-        | Annotated[float, BeforeValidator(lambda v: _positive_number(v))]
+        Literal["sherritt2003", "plug"] | Annotated[float, BeforeValidator(lambda v: _peclet(v))]
     ) = "sherritt2003"
 
     @model_validator(mode="after")
@@ -858,7 +873,7 @@ class RTD(Section):
 
     mean_residence_time: Time | None = None
     correlation: Literal["bongo_njeng2015", "sherritt2003", "sai1990"] = "bongo_njeng2015"
-    peclet: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] | None = None
+    peclet: Annotated[float, BeforeValidator(lambda v: _peclet(v))] | None = None
     model: Literal["open-open", "closed-closed", "open-closed", "gaussian"] = "open-open"
     lifters: RTDLifters = RTDLifters()
     holdup_fraction: Fraction | None = None  # Sherritt; default: feed x MRT / (rho_b V)
