@@ -1,6 +1,8 @@
+import json
 import os
 import stat
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -112,3 +114,31 @@ def test_writes_never_touch_the_process_umask(tmp_path, monkeypatch):
     for name in ("a.txt", "c.csv", "fresh/t.json", "fresh/run_files.json"):
         assert stat.S_IMODE(os.stat(tmp_path / name).st_mode) == 0o640, name
     assert stat.S_IMODE(os.stat(tmp_path / "fresh").st_mode) == 0o750
+
+
+def test_columns_written_without_pandas_are_the_frames_file_byte_for_byte(tmp_path):
+    """The kiln profiles written from the solution's columns (no pandas import) are exactly
+    what pandas writes for its to_frame(), the units file included."""
+    import warnings
+
+    from rotarykiln.case import load_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.kiln.run import run_kiln_case
+    from rotarykiln.outputs import write_columns_atomic, write_frame_atomic
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sol = run_kiln_case(load_case(builtin_case_path("limestone_fired")))
+    columns = dict(sol.columns())
+    columns["with_nan"] = np.where(np.arange(len(sol.z_nodes)) % 3 == 0, np.nan, 1e-300)
+    frame = sol.to_frame()
+    frame["with_nan"] = columns["with_nan"]
+    from rotarykiln.tables import with_units
+
+    frame = with_units(frame, "kiln")
+    a = write_frame_atomic(tmp_path / "a.csv", frame)
+    b = write_columns_atomic(tmp_path / "b.csv", columns, "kiln")
+    assert a.read_bytes() == b.read_bytes()
+    ua = json.loads((tmp_path / "a_units.json").read_text())
+    ub = json.loads((tmp_path / "b_units.json").read_text())
+    assert {**ua, "table": ""} == {**ub, "table": ""}

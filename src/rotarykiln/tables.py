@@ -96,7 +96,7 @@ def split_unit(key: str) -> tuple[str, str]:
     return key.replace("_", " "), ""
 
 
-def column_unit(name: str, series: pd.Series | None = None) -> str:
+def column_unit(name: str, series: pd.Series | None = None, *, float_column: bool = False) -> str:
     """The unit of a column from its name: the suffix's unit, else ``"1"`` for numbers and
     ``""`` for text, flags and integer indices.
 
@@ -109,6 +109,8 @@ def column_unit(name: str, series: pd.Series | None = None) -> str:
     unit = split_unit(str(name))[1]
     if unit:
         return unit
+    if float_column:  # a numeric column known to hold floats (no pandas needed)
+        return DIMENSIONLESS
     from pandas.api.types import is_float_dtype
 
     if series is not None and is_float_dtype(series.dtype):

@@ -12,9 +12,12 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.chemistry.balance import check_element_balance
 from rotarykiln.chemistry.ratelaws import RateContext
@@ -199,6 +202,8 @@ class CellRates:
             {f"production_{s}_kg_s_m": self.production[:, i] for i, s in enumerate(self.species)}
         )
         cols["heat_absorbed_W_m"] = self.heat_absorbed
+        import pandas as pd
+
         return with_units(pd.DataFrame(cols), "chemistry.mechanism")
 
     def plot(self, x=None, ax=None):

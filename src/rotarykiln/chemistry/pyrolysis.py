@@ -13,9 +13,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
 from rotarykiln.tables import with_units
@@ -162,6 +165,8 @@ class ShaleTable:
 
     def to_frame(self) -> pd.DataFrame:
         """The table; ``enthalpy_J_kg`` per kg of shale."""
+        import pandas as pd
+
         frame = pd.DataFrame(
             {
                 "material": self.material,
@@ -185,6 +190,8 @@ def oil_shale_table() -> ShaleTable:
     >>> round(float(t.mass_fraction.sum()), 6), round(float(t.enthalpy.sum()) / 1000, 2)
     (1.0, 896.66)
     """
+    import pandas as pd
+
     df = pd.read_csv(_DATA)
     return ShaleTable(
         material=tuple(df["material"]),

@@ -21,9 +21,12 @@ from __future__ import annotations
 import logging
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
 from rotarykiln.chemistry.plugflow import as_profile
@@ -131,6 +134,8 @@ class SegregatedResult:
     class_conversion: np.ndarray | None = None
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
+
         frame = pd.DataFrame({"tau_s": self.tau, "E_1_s": self.E, "conversion": self.conversion})
         return with_units(frame, "chemistry.segregated")
 

@@ -16,12 +16,13 @@ def write_solution_files(solution, out, prefix: str, *, extra: dict | None = Non
     from rotarykiln.outputs import (
         figures_wanted,
         save_figure_atomic,
-        write_frame_atomic,
+        write_columns_atomic,
         write_json_atomic,
     )
 
     out = Path(out)
-    write_frame_atomic(out / f"{prefix}_profiles.csv", solution.to_frame(), index=False)
+    # the table of solution.to_frame(), written without pandas (a faster start)
+    write_columns_atomic(out / f"{prefix}_profiles.csv", solution.columns(), "kiln")
     summary = {f"{prefix}_{k}": v for k, v in solution.summary().items() if k != "name"}
     summary.update({f"{prefix}_{k}": v for k, v in (extra or {}).items()})
     write_json_atomic(out / f"{prefix}_summary.json", summary)

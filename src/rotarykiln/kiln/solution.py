@@ -262,6 +262,12 @@ class KilnSolution:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per face: position, temperatures (wall, rates at cell centres interpolated)."""
+        import pandas as pd
+
+        return with_units(pd.DataFrame(self.columns()), "kiln")
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """The columns of :meth:`to_frame` (name -> values per face), without pandas."""
         data = {
             "z_m": self.z_nodes,
             "T_bed_K": self.t_bed_nodes,
@@ -280,9 +286,7 @@ class KilnSolution:
         for r, v in self.reaction_rates.items():
             data[f"rate_{r}_kg_s_m"] = np.interp(self.z_nodes, self.z, v)
         data.update(heat_flow_columns(self.fluxes, lambda v: np.interp(self.z_nodes, self.z, v)))
-        import pandas as pd
-
-        return with_units(pd.DataFrame(data), "kiln")
+        return data
 
     def plot(self, ax=None):
         """Temperatures (left) and, when the bed reacts, solids and gas flows (right); returns

@@ -4,9 +4,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.tables import with_units
 
@@ -113,6 +116,8 @@ class TransientSolution:
         """Every variable against z and t, one row per (time, cell): the cell's outlet bed
         temperature (at its solids outlet face), gas temperature at its gas outlet face, wall
         node temperatures, species flows and tracer hold-up."""
+        import pandas as pd
+
         nt, n = self.x.shape[:2]
         data = {
             "t_s": np.repeat(self.t, n),
@@ -134,6 +139,8 @@ class TransientSolution:
 
     def outlet_frame(self) -> pd.DataFrame:
         """Outlet quantities, boundary flows and inventories against time."""
+        import pandas as pd
+
         rows = []
         for k, o in enumerate(self.outlet):
             row = {"t_s": self.t[k]}

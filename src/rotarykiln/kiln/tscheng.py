@@ -16,9 +16,12 @@ import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 from scipy.optimize import brentq
 
 from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
@@ -59,6 +62,8 @@ SAMPLE_T_WALL = 369.2  # K
 
 def load_tscheng_runs() -> pd.DataFrame:
     """The 44 runs as a DataFrame indexed by run id (columns as in the CSV)."""
+    import pandas as pd
+
     path = resources.files("rotarykiln") / "data" / "tscheng1978" / "tscheng_pilot_kiln_A11-A54.csv"
     with path.open("r", encoding="utf-8") as fh:
         df = pd.read_csv(fh)
@@ -211,6 +216,8 @@ def score_run(run: str, solution) -> RunScore:
 
 def validate_all(closures: Closures | None = None, n_cells: int = 100) -> pd.DataFrame:
     """Solve all 44 runs and score them: one row per run, RMSE in K."""
+    import pandas as pd
+
     from rotarykiln.kiln.solve import solve_kiln
 
     rows = []

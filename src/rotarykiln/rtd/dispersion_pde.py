@@ -25,9 +25,12 @@ of the model (moments of a convolution add); the tests check this against the cl
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 from scipy import integrate, sparse
 
 from rotarykiln.errors import ConvergenceError, InputError, check_positive
@@ -96,6 +99,8 @@ class PDEResult:
     n_steps: int
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
+
         return with_units(
             pd.DataFrame({"theta": self.theta, "outlet": self.outlet}), "rtd.dispersion_pde"
         )

@@ -25,9 +25,12 @@ The dispersion coefficient is :math:`D = uL/Pe = L^2/(Pe\,\tau)` (eq. 9).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 from scipy import optimize, stats
 
 from rotarykiln.errors import ConvergenceError, InputError, check_positive
@@ -287,6 +290,8 @@ class FitResult(_ModelParameters):
         return out
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
+
         frame = pd.DataFrame(
             {"t_s": self.t, "E_data_1_s": self.data, "E_fit_1_s": self.fitted}
         ).assign(residual_1_s=self.residuals)

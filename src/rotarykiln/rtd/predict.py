@@ -18,9 +18,12 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 from scipy import optimize
 
 from rotarykiln.errors import InputError, check_positive
@@ -71,6 +74,8 @@ class RTDPrediction:
         return out
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
+
         frame = pd.DataFrame({"t_s": self.t, "E_1_s": self.exit_age, "F": self.cumulative})
         return with_units(frame, "rtd.predict")
 

@@ -25,9 +25,12 @@ from __future__ import annotations
 import re
 import warnings
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import InputError
 from rotarykiln.tables import with_units
@@ -104,6 +107,8 @@ class TracerResult:
         return self.exit_age * self.mean
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
+
         frame = pd.DataFrame(
             {
                 "t_s": self.t,
@@ -371,6 +376,8 @@ def read_tracer_csv(path, *, time_unit: str | None = None) -> tuple[np.ndarray, 
         time, a cell that is not a number, a time beyond :data:`MAX_TIME` s or a signal beyond
         :data:`MAX_SIGNAL`.
     """
+    import pandas as pd
+
     from rotarykiln.studies.io import read_data_csv, shown
 
     name = shown(str(path), 200)

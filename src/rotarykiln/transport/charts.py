@@ -11,9 +11,12 @@ reproducible stand-in for McTait's undefined variance; notes 002 section 2.5, sp
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.tables import with_units
 from rotarykiln.transport.saeman import (
@@ -44,6 +47,8 @@ class DesignChart:
     title: str = ""
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
+
         d = {
             "y_over_r": self.y_over_r,
             "fill": self.fill,

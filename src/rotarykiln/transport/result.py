@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.tables import with_units
 
@@ -121,6 +124,8 @@ class BedProfile:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per axial point."""
+        import pandas as pd
+
         frame = pd.DataFrame(
             {
                 "z_m": self.z,

@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import warnings
 from importlib import resources
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import OutOfRangeWarning
 from rotarykiln.transport.scott import bachmann_dynamic_angle, scott_profile
@@ -40,6 +43,8 @@ def scott1986_table(name: str) -> pd.DataFrame:
     >>> len(scott1986_table("a4_07"))
     16
     """
+    import pandas as pd
+
     if name not in SCOTT1986_TABLES:
         raise KeyError(f"{name!r} is not one of {SCOTT1986_TABLES}")
     path = resources.files("rotarykiln.data").joinpath("scott1986", f"{name}.csv")

@@ -16,9 +16,12 @@ physically derived value (half). See docs/transverse.md.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import InputError, check_positive, check_range
 from rotarykiln.geometry import chord_from_half_angle, half_angle_from_fill
@@ -409,6 +412,8 @@ class ActiveLayer:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per operating point."""
+        import pandas as pd
+
         cols = {
             "radius": "radius_m",
             "omega": "omega_rad_s",

@@ -30,9 +30,12 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import ConvergenceError, InputError, check_nonnegative, check_positive
 from rotarykiln.progress import progress_bar
@@ -136,6 +139,8 @@ class GridResult:
 
     def to_frame(self) -> pd.DataFrame:
         """Time series as a DataFrame (temperatures in K, sizes in m)."""
+        import pandas as pd
+
         df = pd.DataFrame(
             {
                 "t_s": self.t,

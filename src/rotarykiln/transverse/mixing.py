@@ -27,9 +27,12 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import InputError, OutOfRangeWarning, check_nonnegative, check_positive
 from rotarykiln.tables import with_units
@@ -361,6 +364,8 @@ class MixingResult:
 
     def to_frame(self) -> pd.DataFrame:
         """Time series of the contact distance."""
+        import pandas as pd
+
         return with_units(
             pd.DataFrame({"t_s": self.t, "contact_m": self.contact}), "transverse.mixing"
         )

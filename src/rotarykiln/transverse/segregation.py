@@ -25,9 +25,12 @@ rounding (max 0.0055).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
 from rotarykiln.tables import with_units
@@ -190,6 +193,8 @@ class LayerSizes:
 
     def to_frame(self) -> pd.DataFrame:
         """Volume fraction of each size class in feed, inner and outer layer."""
+        import pandas as pd
+
         frame = pd.DataFrame(
             {
                 "size_m": self.sizes,

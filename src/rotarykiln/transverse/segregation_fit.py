@@ -13,8 +13,12 @@ thesis computed it.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
+
+if TYPE_CHECKING:
+    import pandas as pd
 from scipy.optimize import least_squares
 
 from rotarykiln.errors import ConvergenceError, InputError
