@@ -202,9 +202,14 @@ def test_a_fresh_output_folder_appears_only_with_its_files(tmp_path):
     folder behind, empty. Now the folder (and its missing parent) appears at the commit, whole;
     a SIGKILL leaves only a staging folder beside, which the next run into the folder removes."""
     out = tmp_path / "new" / "results"  # its parent does not exist either
+    t0 = time.monotonic()  # a whole run first: the kills fall inside its time, before the commit
+    p = _start(tmp_path / "timing", "report")
+    p.communicate(timeout=120)
+    whole = time.monotonic() - t0
     before_commit = 0
-    for sig, delay in ((signal.SIGTERM, 0.8), (signal.SIGKILL, 0.8), (signal.SIGKILL, 1.4)):
-        p = _start(out, "tables")
+    for sig, share in ((signal.SIGTERM, 0.5), (signal.SIGKILL, 0.5), (signal.SIGKILL, 0.7)):
+        delay = max(EARLIEST, share * whole)
+        p = _start(out, "report")
         time.sleep(delay)
         p.send_signal(sig)
         _, err = p.communicate(timeout=120)
