@@ -307,6 +307,8 @@ def test_version_and_help_import_no_command_module(argv, light):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     heavy = out.stdout.rsplit("HEAVY", 1)[1]
     assert (heavy.strip() == "[]") is light, heavy
+    if argv == ["--version"]:
+        assert out.stdout.startswith("rotarykiln "), out  # on stdout, as argparse prints it
     if argv == ["--help"]:
         for name in ("run", "sweep", "transient"):
             assert name in out.stdout

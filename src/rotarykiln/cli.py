@@ -66,7 +66,8 @@ class _Version(argparse.Action):
     def __call__(self, parser, namespace, values, option_string=None):
         from rotarykiln import __version__
 
-        parser.exit(0, f"rotarykiln {__version__}\n")
+        print(f"rotarykiln {__version__}")  # on stdout, as argparse's own version action
+        parser.exit(0)
 
 
 def command_of(argv: list[str] | None) -> str | None:
