@@ -6,7 +6,6 @@ Budget: a fixed seed, a few hundred mutations (about 5 s). A longer campaign (18
 
 from __future__ import annotations
 
-import copy
 import random
 import re
 import time
@@ -14,6 +13,7 @@ import time
 import pytest
 import yaml
 
+from fuzz_helpers import mutate
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path, list_builtin_cases
 from rotarykiln.errors import ConvergenceError, InputError
@@ -48,38 +48,13 @@ VALUES = [
 RAW = re.compile(r"Input should|None is not|is not an? rtd|given is not|Value error|\[type=")
 
 
-def _paths(x, p=()):
-    if isinstance(x, dict):
-        for k, v in x.items():
-            yield p + (k,)
-            yield from _paths(v, p + (k,))
-    elif isinstance(x, list):
-        for i, v in enumerate(x):
-            yield p + (i,)
-            yield from _paths(v, p + (i,))
-
-
-def _set(d, p, v):
-    for k in p[:-1]:
-        d = d[k]
-    if v == "DELETE":
-        if isinstance(d, dict):
-            del d[p[-1]]
-        else:
-            d.pop(p[-1])
-    else:
-        d[p[-1]] = v
-
-
 def _mutations(n, seed):
     rng = random.Random(seed)
     names = list_builtin_cases()
     for _ in range(n):
         name = rng.choice(names)
         base = yaml.safe_load(builtin_case_path(name).read_text())
-        d = copy.deepcopy(base)
-        p = rng.choice(list(_paths(base)))
-        _set(d, p, rng.choice(VALUES + ["DELETE"]))
+        d, p, _ = mutate(base, VALUES, rng)
         yield name, p, d
 
 

@@ -16,7 +16,6 @@ scale: ``docs/scripts/fuzz_campaign_files.py``.
 
 from __future__ import annotations
 
-import copy
 import random
 import re
 import time
@@ -26,6 +25,7 @@ from pathlib import Path
 import pytest
 import yaml
 
+from fuzz_helpers import mutate
 from rotarykiln.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -85,29 +85,6 @@ TEXT_INSERTS = [
     "'",
 ]
 RAW = re.compile(r"Input should|Value error|\[type=|Traceback|pydantic")
-
-
-def _paths(x, p=()):
-    if isinstance(x, dict):
-        for k, v in x.items():
-            yield p + (k,)
-            yield from _paths(v, p + (k,))
-    elif isinstance(x, list):
-        for i, v in enumerate(x):
-            yield p + (i,)
-            yield from _paths(v, p + (i,))
-
-
-def _set(d, p, v):
-    for k in p[:-1]:
-        d = d[k]
-    if v == "DELETE":
-        if isinstance(d, dict):
-            del d[p[-1]]
-        else:
-            d.pop(p[-1])
-    else:
-        d[p[-1]] = v
 
 
 KEYS = ("elements", "composition", "molar_mass", "cp", "h_f", "description")
@@ -184,11 +161,7 @@ def mutations(kind: str, n: int, seed: int):
         if rng.random() < 0.35:
             yield name, "text", _text_mutation(text, rng)
             continue
-        base = yaml.safe_load(text)
-        data = copy.deepcopy(base)
-        path = rng.choice(list(_paths(base)))
-        value = rng.choice(VALUES + ["DELETE"])
-        _set(data, path, value)
+        data, path, value = mutate(yaml.safe_load(text), VALUES, rng)
         try:
             dumped = yaml.safe_dump(data, allow_unicode=True, sort_keys=False)
         except yaml.YAMLError:

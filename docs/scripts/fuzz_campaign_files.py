@@ -26,20 +26,16 @@ Usage (2 workers; results as JSON on stdout and in ``--json FILE``)::
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import multiprocessing as mp
-import os
-import resource
 import signal
 import sys
 import tempfile
 import time
 import traceback
-import warnings
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from campaign_common import ROOT, Alarm, counts, emit, run_pool, slowest_refusal
+
 sys.path.insert(0, str(ROOT / "tests"))
 
 MEMORY_LIMIT = 3 * 2**30  # bytes of address space per worker
@@ -50,20 +46,8 @@ KINDS = ("events", "species", "reactions")
 _KILN = None  # the barr_T4 kiln of a worker (events are checked against it)
 
 
-class _Alarm(Exception):
-    pass
-
-
-def _on_alarm(signum, frame):
-    raise _Alarm
-
-
-def _init_worker():
+def _load_kiln():
     global _KILN
-    os.environ.setdefault("MPLBACKEND", "Agg")
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
-    signal.signal(signal.SIGALRM, _on_alarm)
-    warnings.simplefilter("ignore")
     from test_fuzz_input_files import barr_kiln
 
     _KILN = barr_kiln()
@@ -176,7 +160,7 @@ def _one(task):
             row["message"] = msg[:300]
         except MemoryError:
             row["outcome"] = "out_of_memory"
-        except _Alarm:
+        except Alarm:
             row["outcome"] = "timeout"
         except BaseException:
             row["outcome"] = "traceback"
@@ -219,26 +203,21 @@ def campaign(n: int, seed: int, workers: int, kinds, runs: int, cells: int) -> d
     if runs and "events" in kinds:  # the first ``runs`` accepted events files are run
         _choose_runs([t for t in tasks if t[1] == "events"], runs)
     tasks = [tuple(t) for t in tasks]
-    t0 = time.perf_counter()
-    rows = []
-    ctx = mp.get_context("fork")
-    with ctx.Pool(workers, initializer=_init_worker, maxtasksperchild=500) as pool:
-        for k, row in enumerate(pool.imap_unordered(_one, tasks, chunksize=4)):
-            rows.append(row)
-            if (k + 1) % 200 == 0:
-                print(
-                    f"{k + 1}/{len(tasks)} ({time.perf_counter() - t0:.0f} s)",
-                    file=sys.stderr,
-                    flush=True,
-                )
-    result = {"n_per_kind": n, "seed": seed, "wall_time_s": round(time.perf_counter() - t0, 1)}
+    rows, wall = run_pool(
+        _one,
+        tasks,
+        workers,
+        MEMORY_LIMIT,
+        _load_kiln,
+        maxtasksperchild=500,
+        chunksize=4,
+        every=200,
+    )
+    result = {"n_per_kind": n, "seed": seed, "wall_time_s": round(wall, 1)}
     for kind in kinds:
         mine = [r for r in rows if r["kind"] == kind]
-        counts: dict[str, int] = {}
-        for r in mine:
-            counts[r["outcome"]] = counts.get(r["outcome"], 0) + 1
         ran = [r for r in mine if r.get("ran")]
-        entry = {"n": len(mine), "counts": counts}
+        entry = {"n": len(mine), "counts": counts(mine)}
         if ran:
             entry["runs"] = {
                 "made": len(ran),
@@ -246,10 +225,9 @@ def campaign(n: int, seed: int, workers: int, kinds, runs: int, cells: int) -> d
                 "refused_at_run": sum("run_refused" in r for r in ran),
                 "max_time_s": round(max(r["time"] for r in ran), 1),
             }
-        refusals = [r for r in mine if r["outcome"] == "refused"]
-        if refusals:
-            slow = max(refusals, key=lambda r: r["time"])
-            entry["slowest_refusal"] = {k: slow.get(k) for k in ("mutation", "time", "message")}
+        slow = slowest_refusal(mine, ("mutation", "time", "message"))
+        if slow:
+            entry["slowest_refusal"] = slow
         entry["not_clean"] = [r for r in mine if r["outcome"] not in ("refused", "accepted")][:30]
         result[kind] = entry
     return result
@@ -266,14 +244,7 @@ def main() -> int:
     p.add_argument("--json", help="also write the result to this file")
     args = p.parse_args()
     result = campaign(args.n, args.seed, args.workers, args.kinds, args.runs, args.cells)
-    text = json.dumps(
-        result,
-        indent=1,
-        default=lambda o: str(o) if not isinstance(o, float) or math.isfinite(o) else None,
-    )
-    if args.json:
-        Path(args.json).write_text(text + "\n")
-    print(text)
+    emit(result, args.json)
     return 0 if not any(result[k]["not_clean"] for k in args.kinds) else 1
 
 

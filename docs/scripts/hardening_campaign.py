@@ -22,44 +22,29 @@ Usage (2 workers; results as JSON on stdout and in ``--json FILE``)::
 from __future__ import annotations
 
 import argparse
-import contextlib
 import copy
-import io
-import json
-import math
-import multiprocessing as mp
-import os
 import random
-import resource
 import signal
 import sys
 import tempfile
 import time
 import traceback
-import warnings
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from campaign_common import (
+    ROOT,
+    Alarm,
+    counts,
+    emit,
+    run_cli,
+    run_pool,
+    slowest_refusal,
+    times,
+    warm_cli,
+)
+
 MEMORY_LIMIT = 4 * 2**30  # bytes of address space per worker
 ALARM = 120  # s per case
-
-
-class _Alarm(Exception):
-    pass
-
-
-def _on_alarm(signum, frame):
-    raise _Alarm
-
-
-def _init_worker():
-    os.environ.setdefault("MPLBACKEND", "Agg")
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
-    signal.signal(signal.SIGALRM, _on_alarm)
-    warnings.simplefilter("ignore")
-    from rotarykiln.cli import build_parser
-
-    build_parser()  # imports every command once: not counted in the first case's time
 
 
 # ---------------------------------------------------------------------------------------- fuzz
@@ -69,38 +54,17 @@ def _fuzz_one(task):
     index, name, path, data = task
     import yaml
 
-    from rotarykiln import cli
-
     with tempfile.TemporaryDirectory() as tmp:
         case_file = Path(tmp) / "case.yaml"
         try:
             case_file.write_text(yaml.safe_dump(data, allow_unicode=True), encoding="utf-8")
         except Exception as exc:  # not representable as YAML (e.g. nan keys): skip
             return {"i": index, "case": name, "outcome": "unwritable", "error": repr(exc)}
-        out, err = io.StringIO(), io.StringIO()
-        t0 = time.perf_counter()
-        signal.alarm(ALARM)
-        try:
-            with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-                code = cli.main(["run", str(case_file), "--out", f"{tmp}/out", "--no-plots"])
-            outcome = {0: "converged", 1: "convergence_error", 2: "refused"}.get(
-                code, f"exit{code}"
-            )
-            detail = err.getvalue().strip().splitlines()
-        except MemoryError:
-            outcome, detail = "out_of_memory", []
-        except _Alarm:
-            outcome, detail = "timeout", []
-        except SystemExit as exc:
-            outcome, detail = f"exit{exc.code}", err.getvalue().strip().splitlines()
-        except BaseException:
-            outcome, detail = "traceback", traceback.format_exc().splitlines()[-6:]
-        finally:
-            signal.alarm(0)
-        dt = time.perf_counter() - t0
-    lines = [x for x in detail if not x.startswith("warning: ")]
-    if outcome == "refused" and len(lines) != 1:
-        outcome = "refused_not_one_line"
+        outcome, lines, dt = run_cli(
+            ["run", str(case_file), "--out", f"{tmp}/out", "--no-plots"],
+            ALARM,
+            {0: "converged", 1: "convergence_error", 2: "refused"},
+        )
     return {
         "i": index,
         "case": name,
@@ -219,7 +183,7 @@ def _envelope_one(task):
         row["outcome"], row["message"] = "refused", str(exc)[:300]
     except MemoryError:
         row["outcome"] = "out_of_memory"
-    except _Alarm:
+    except Alarm:
         row["outcome"] = "timeout"
     except BaseException:
         row["outcome"], row["message"] = "traceback", traceback.format_exc()[-1500:]
@@ -248,34 +212,13 @@ def envelope(n: int, seed: int, workers: int) -> dict:
 
 
 def _campaign(func, tasks, workers, kind) -> dict:
-    t0 = time.perf_counter()
-    rows = []
-    ctx = mp.get_context("fork")
-    with ctx.Pool(workers, initializer=_init_worker, maxtasksperchild=200) as pool:
-        for k, row in enumerate(pool.imap_unordered(func, tasks, chunksize=1)):
-            rows.append(row)
-            if (k + 1) % 100 == 0:
-                print(
-                    f"{kind}: {k + 1}/{len(tasks)} ({time.perf_counter() - t0:.0f} s)",
-                    file=sys.stderr,
-                    flush=True,
-                )
-    wall = time.perf_counter() - t0
-    counts: dict[str, int] = {}
-    for r in rows:
-        counts[r["outcome"]] = counts.get(r["outcome"], 0) + 1
-    result = {"kind": kind, "n": len(rows), "wall_time_s": round(wall, 1), "counts": counts}
-    by_outcome: dict[str, list[float]] = {}
-    for r in rows:
-        by_outcome.setdefault(r["outcome"], []).append(r["time"])
-    result["time_s"] = {
-        k: {"median": round(sorted(v)[len(v) // 2], 3), "max": round(max(v), 3)}
-        for k, v in by_outcome.items()
-    }
-    refusals = [r for r in rows if r["outcome"] == "refused"]
-    if refusals:
-        slow = max(refusals, key=lambda r: r["time"])
-        result["slowest_refusal"] = {k: slow.get(k) for k in ("case", "path", "time", "message")}
+    rows, wall = run_pool(func, tasks, workers, MEMORY_LIMIT, warm_cli, label=f"{kind}: ")
+    n_by_outcome = counts(rows)
+    result = {"kind": kind, "n": len(rows), "wall_time_s": round(wall, 1), "counts": n_by_outcome}
+    result["time_s"] = times(rows)
+    slow = slowest_refusal(rows, ("case", "path", "time", "message"))
+    if slow:
+        result["slowest_refusal"] = slow
     result["not_clean"] = [
         r
         for r in rows
@@ -293,7 +236,7 @@ def _campaign(func, tasks, workers, kind) -> dict:
                 c["max_d2T_bed_K"] = round(max(c.get("max_d2T_bed_K", 0), r["zigzag_K"]), 1)
                 c["max_flips"] = max(c.get("max_flips", 0), r["flips"])
         result["oscillating"] = [r for r in rows if r.get("flips", 0) > 2]
-        conv = counts.get("converged", 0)
+        conv = n_by_outcome.get("converged", 0)
         result["converged_percent"] = round(100 * conv / max(len(rows), 1), 2)
     return result
 
@@ -308,14 +251,7 @@ def main() -> int:
     args = p.parse_args()
     run = fuzz if args.campaign == "fuzz" else envelope
     result = run(args.n, args.seed, args.workers)
-    text = json.dumps(
-        result,
-        indent=1,
-        default=lambda o: str(o) if not isinstance(o, float) or math.isfinite(o) else None,
-    )
-    if args.json:
-        Path(args.json).write_text(text + "\n")
-    print(text)
+    emit(result, args.json)
     return 0 if not result["not_clean"] else 1
 
 

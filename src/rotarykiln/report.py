@@ -191,11 +191,16 @@ def format_power(watts: float, digits: int = 4) -> str:
     >>> format_power(119740.3), format_power(2.5e6), format_power(35.0), format_power(0.0)
     ('119.7 kW', '2.5 MW', '35 W', '0 W')
     """
-    watts = float(watts)
-    for factor, unit in ((1e6, "MW"), (1e3, "kW")):
-        if abs(watts) >= factor:
-            return f"{significant(watts / factor, digits)} {unit}"
-    return f"{significant(watts, digits)} W"
+    return _in_units(float(watts), ((1e6, 1e6, "MW"), (1e3, 1e3, "kW")), "W", digits)
+
+
+def _in_units(value: float, larger: tuple, unit: str, digits: int) -> str:
+    """``value`` (in ``unit``) in the first of the ``larger`` units (from, factor, unit) whose
+    ``from`` its magnitude reaches, else in ``unit``, to ``digits`` significant figures."""
+    for start, factor, name in larger:
+        if abs(value) >= start:
+            return f"{significant(value / factor, digits)} {name}"
+    return f"{significant(value, digits)} {unit}"
 
 
 def format_temperature(kelvin: float) -> str:
@@ -218,10 +223,7 @@ def format_mass_flow(kg_s: float, digits: int = 4) -> str:
     >>> format_mass_flow(0.0172222), format_mass_flow(12.5), format_mass_flow(0.079155)
     ('62 kg/h', '45 t/h', '285 kg/h')
     """
-    per_hour = float(kg_s) * 3600.0
-    if abs(per_hour) >= 1000.0:
-        return f"{significant(per_hour / 1000.0, digits)} t/h"
-    return f"{significant(per_hour, digits)} kg/h"
+    return _in_units(float(kg_s) * 3600.0, ((1000.0, 1000.0, "t/h"),), "kg/h", digits)
 
 
 def format_duration(seconds: float, digits: int = 4) -> str:
@@ -232,12 +234,8 @@ def format_duration(seconds: float, digits: int = 4) -> str:
     >>> format_duration(7423.0), format_duration(45.0), format_duration(36000.0)
     ('123.7 min', '45 s', '10 h')
     """
-    seconds = float(seconds)
-    if abs(seconds) >= 5 * 3600:
-        return f"{significant(seconds / 3600.0, digits)} h"
-    if abs(seconds) >= 120:
-        return f"{significant(seconds / 60.0, digits)} min"
-    return f"{significant(seconds, digits)} s"
+    steps = ((5 * 3600, 3600.0, "h"), (120, 60.0, "min"))
+    return _in_units(float(seconds), steps, "s", digits)
 
 
 def air_ratio(excess_air: float) -> str:

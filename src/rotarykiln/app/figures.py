@@ -234,26 +234,11 @@ def transverse_figure(series: dict[str, list], title: str) -> go.Figure:
 
     t = series.get("t_s", [])
     fig = make_subplots(rows=2, cols=1, shared_xaxes=True, vertical_spacing=0.08)
-    for column, name, colour in (
-        ("T_shale_K", "shale", COLOURS.get("bed")),
-        ("T_ash_K", "ash", COLOURS.get("gas")),
-    ):
-        if column in series:
-            fig.add_trace(
-                go.Scatter(
-                    x=t,
-                    y=series[column],
-                    mode="lines",
-                    name=f"{name}, mean temperature",
-                    line={"color": colour, "width": 2.5},
-                    hovertemplate="%{y:.1f} K",
-                ),
-                row=1,
-                col=1,
-            )
-    for column, name, dash in (
-        ("extent_percent", "extent of mixing", "solid"),
-        ("volatiles_percent", "volatiles evolved", "dash"),
+    for column, name, row, line in (
+        ("T_shale_K", "shale, mean temperature", 1, {"color": COLOURS.get("bed"), "width": 2.5}),
+        ("T_ash_K", "ash, mean temperature", 1, {"color": COLOURS.get("gas"), "width": 2.5}),
+        ("extent_percent", "extent of mixing", 2, {"width": 2, "dash": "solid"}),
+        ("volatiles_percent", "volatiles evolved", 2, {"width": 2, "dash": "dash"}),
     ):
         if column in series:
             fig.add_trace(
@@ -262,10 +247,10 @@ def transverse_figure(series: dict[str, list], title: str) -> go.Figure:
                     y=series[column],
                     mode="lines",
                     name=name,
-                    line={"width": 2, "dash": dash},
-                    hovertemplate="%{y:.1f} %",
+                    line=line,
+                    hovertemplate="%{y:.1f} " + ("K" if row == 1 else "%"),
                 ),
-                row=2,
+                row=row,
                 col=1,
             )
     _layout(fig, _title("Transverse run", title), "mean temperature (K)", "")

@@ -830,7 +830,10 @@ def _coeffs(e: dict):
     return tuple(float(cp.get(k, 0.0)) for k in "abcdeg")
 
 
-def _check_T(phase, source, e, T):
+def _entry_at(phase, source, T):
+    """The database entry of ``phase`` and the checked temperature array ``T`` (a warning
+    outside the fit's range)."""
+    e = _entry(phase, source)
     T = np.asarray(T, dtype=float)
     check_positive("T", T, "K")
     off_ref = T[T != e["T0"]] if T.ndim else (T if T != e["T0"] else np.array([]))
@@ -842,7 +845,7 @@ def _check_T(phase, source, e, T):
             e["T_max"],
             "the SimCem database fit",
         )
-    return T
+    return e, T
 
 
 def simcem_phase_cp(phase, T, source=None):
@@ -873,8 +876,7 @@ def simcem_phase_cp(phase, T, source=None):
     ----------
     SimCem 1.0.0 ``free_database.xml`` (team source folder reference/cement_lime.md 0.1).
     """
-    e = _entry(phase, source)
-    T = _check_T(phase, source, e, T)
+    e, T = _entry_at(phase, source, T)
     a, b, c, d, ee, g = _coeffs(e)
     cp = a + b * T + c / T**2 + d / np.sqrt(T) + ee * T**2 + g * T**3
     return cp if cp.ndim else float(cp)
@@ -932,8 +934,7 @@ def simcem_phase_enthalpy(phase, T, source=None):
     ----------
     SimCem 1.0.0 ``free_database.xml`` (team source folder reference/cement_lime.md 0.1).
     """
-    e = _entry(phase, source)
-    T = _check_T(phase, source, e, T)
+    e, T = _entry_at(phase, source, T)
     H, _ = _h_s(e, T)
     return H if np.ndim(H) else float(H)
 
@@ -965,8 +966,7 @@ def simcem_phase_entropy(phase, T, source=None):
     ----------
     SimCem 1.0.0 ``free_database.xml`` (team source folder reference/cement_lime.md 0.1).
     """
-    e = _entry(phase, source)
-    T = _check_T(phase, source, e, T)
+    e, T = _entry_at(phase, source, T)
     _, S = _h_s(e, T)
     return S if np.ndim(S) else float(S)
 
@@ -997,8 +997,7 @@ def simcem_phase_gibbs(phase, T, source=None):
     ----------
     SimCem 1.0.0 ``free_database.xml`` (team source folder reference/cement_lime.md 0.1).
     """
-    e = _entry(phase, source)
-    T = _check_T(phase, source, e, T)
+    e, T = _entry_at(phase, source, T)
     H, S = _h_s(e, T)
     G = H - T * S
     return G if np.ndim(G) else float(G)

@@ -545,6 +545,16 @@ def _wrap(name: str, width: int = _HEADER_WIDTH) -> list[str]:
     return lines
 
 
+def _float_or_text(v) -> float | str:
+    """``v`` as a float, or as text where it is text or not a number (a table cell as given)."""
+    if isinstance(v, str):
+        return v
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        return str(v)
+
+
 def _number(v) -> str:
     """A table cell: 4 significant digits, fixed point between 1e-3 and 1e6.
 
@@ -553,12 +563,9 @@ def _number(v) -> str:
     >>> [_number(v) for v in (1650.228, 0.037862, 21730.99, 3.5, 2.6e-12, 0.0, float("nan"))]
     ['1650', '0.03786', '21731', '3.500', '2.600e-12', '0', '']
     """
-    if isinstance(v, str):
-        return v
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        return str(v)
+    x = _float_or_text(v)
+    if isinstance(x, str):
+        return x
     if not math.isfinite(x):
         return "" if math.isnan(x) else str(x)
     if x == 0:
@@ -577,12 +584,9 @@ def _value(v) -> str:
     >>> [_value(v) for v in (1.0, 2.5, 1.2345678, 12345.0, "steam")]
     ['1', '2.5', '1.235', '12340', 'steam']
     """
-    if isinstance(v, str):
-        return v
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        return str(v)
+    x = _float_or_text(v)
+    if isinstance(x, str):
+        return x
     return f"{float(f'{x:.4g}'):.10g}" if math.isfinite(x) else ""
 
 
