@@ -75,7 +75,7 @@ def test_nasa_and_shomate_match_the_gas_tables():
 
 
 def test_user_gas_species_in_the_kiln_mixture():
-    from rotarykiln.kiln.thermo_gas import mixture_of
+    from rotarykiln.kiln.gas_mixture import mixture_of
 
     sp = load_species(USER)
     g = mixture_of(("N2", "CO_user"), sp)

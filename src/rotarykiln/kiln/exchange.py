@@ -1,12 +1,11 @@
 r"""Heat exchange across a kiln cross-section: every closure dispatched in one place.
 
-Both steady kilns (the heat model, :class:`~rotarykiln.kiln.residual.HeatResidual`, and the
-reacting model, :class:`~rotarykiln.kiln.residual.KilnResidual`) compute the heat
-flows per metre of kiln between gas, exposed wall, bed and covered wall with
-:class:`CrossSectionExchange`, given the cell-mean temperatures and a :class:`FreeboardGas`
-(the gas properties of that model: a table of fixed composition, :class:`TableGas`, or the
-mixture of changing composition of the reacting kiln,
-:class:`~rotarykiln.kiln.gas_mixture.MixtureGas`):
+The kiln's residual (:class:`~rotarykiln.kiln.residual.KilnResidual`, for every kiln, inert or
+reacting, steady or transient) computes the heat flows per metre of kiln between gas, exposed
+wall, bed and covered wall with :class:`CrossSectionExchange`, given the cell-mean temperatures
+and a :class:`FreeboardGas` (the gas properties: the mixture of changing composition the
+residual uses, :class:`~rotarykiln.kiln.gas_mixture.MixtureGas`, or a table of fixed
+composition, :class:`TableGas`):
 
 .. math::
     Q_{gw} = h_{gw} A_w (T_g - T_w),\quad Q_{gb} = h_{gb} L_c (T_g - T_b),\quad

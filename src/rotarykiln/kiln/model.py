@@ -128,7 +128,7 @@ SEED004_CLOSURES = Closures(
 
 @dataclass(frozen=True)
 class Kiln:
-    """Everything the reacting kiln model needs (SI units).
+    """Everything the kiln model needs, inert or reacting (SI units).
 
     Geometry and motion: ``length`` (m), ``radius`` (m, inner), ``omega`` (rad/s), ``fill``
     (-, constant), ``bed_velocity`` (m/s, axial solids speed; hold-up per length of species i
@@ -141,8 +141,8 @@ class Kiln:
     ``pressure`` (Pa), ``gas_emissivity_law`` (a, b, minimum) for
     :math:`\\varepsilon_g = \\max(a + bT, \\min)` or None for the WSGG model of the closures
     with the local CO2 and H2O partial pressures.
-    Wall: ``layers`` (inner to outer, :class:`~rotarykiln.materials.lining.Layer`): the lined
-    wall of the heat model (k(T) layers, shell loss by convection and radiation to
+    Wall: ``layers`` (inner to outer, :class:`~rotarykiln.materials.lining.Layer`): a lined
+    wall (:class:`~rotarykiln.kiln.wall.LinedWall`: k(T) layers, shell loss by convection and radiation to
     ``ambient_temperature`` with ``wind_speed`` m/s, ``shell_emissivity`` default that of the
     last layer); without layers (the default, seed 004): a single inner-wall temperature with
     the loss :math:`U \\pi D (T_w - T_a)`, ``wall_loss_u`` (W/(m2 K), on the inner wall).

@@ -1,4 +1,4 @@
-"""What the two kiln solutions share: the temperature-profile plot and the heat-flow columns."""
+"""The kiln solution's temperature-profile plot, figure colours and heat-flow columns."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-r"""Residual of the reacting kiln: energy and species balances of every cell, one Newton system.
+r"""Residual of the kiln: energy and species balances of every cell, one Newton system.
 
 Unknowns of cell ``j`` (last axis): 0 ``T_bed`` at face j+1 (solids outlet of the cell), 1
 ``T_gas`` at the cell's gas outlet (face j counter-current, face j+1 co-current), 2 the inner wall (with a lining: then each
@@ -27,12 +27,11 @@ flows (implicit upwind: flows never turn negative):
 
     0 = Q_{gw} + Q_{rw} - Q_{cw} - U\pi D (T_w - T_a)
 
-(with a lining, the wall rows of the heat model instead: :mod:`rotarykiln.kiln.wall`).
+(with a lining, the wall rows of :class:`~rotarykiln.kiln.wall.LinedWall` instead).
 Freeboard (``phase: gas``) reactions (:mod:`rotarykiln.chemistry.gas_phase`) change the gas
 species at the gas temperature and release :math:`-\Delta H_{298}\,r` into the gas balance
 instead (the gas tables hold the sensible part), not into the bed. The
-exchange terms come from :class:`rotarykiln.kiln.exchange.CrossSectionExchange`, shared with
-the heat model.
+exchange terms come from :class:`rotarykiln.kiln.exchange.CrossSectionExchange`.
 :math:`h_i` are sensible enthalpies (0 at 298.15 K): the gases the bed releases leave it at the
 bed temperature and are heated to the gas temperature inside the gas balance. Every term
 appears with the same value in the two balances it links, so the scheme is conservative:
@@ -56,9 +55,8 @@ from rotarykiln.kiln.exchange import (
     gas_conductance,
     upwind_weight,
 )
-from rotarykiln.kiln.gas_mixture import MixtureGas
+from rotarykiln.kiln.gas_mixture import MixtureGas, mixture_of
 from rotarykiln.kiln.model import Kiln
-from rotarykiln.kiln.thermo_gas import mixture_of
 from rotarykiln.kiln.wall import ConstantUWall, LinedWall
 from rotarykiln.materials.gas import T_REF
 
@@ -131,7 +129,7 @@ class KilnResidual:
         )
         self.flow_in = {s: float(k.feed.get(s, 0.0)) for s in sp.bed_names}
         self.i_h2o = self.gas_names.index("H2O") if "H2O" in self.gas_names else None
-        # grid, wall and exchange (shared with the heat model)
+        # grid, wall and exchange
         self.grid = g = cell_grid(
             k.length,
             k.radius,

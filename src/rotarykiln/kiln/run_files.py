@@ -1,4 +1,4 @@
-"""Files of a kiln run (``rotarykiln run``), written the same way by both kiln runners."""
+"""Files of a kiln run (``rotarykiln run``): profiles CSV, summary JSON and figure."""
 
 from __future__ import annotations
 

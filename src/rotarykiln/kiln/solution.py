@@ -19,7 +19,7 @@ __all__ = ["KilnSolution"]
 
 @dataclass(frozen=True)
 class KilnSolution:
-    """Steady reacting kiln solution (SI units).
+    """Steady kiln solution, inert or reacting (SI units).
 
     Face profiles (``n + 1`` values, z = 0 at the solids inlet): ``z_nodes`` (m),
     ``t_bed_nodes``, ``t_gas_nodes`` (K), ``bed_flows`` and ``gas_flows`` (species -> kg/s).

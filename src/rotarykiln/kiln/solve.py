@@ -94,7 +94,7 @@ def solve_kiln(
     initial: np.ndarray | None = None,
     check_balances: bool = True,
 ) -> KilnSolution:
-    """Solve the steady energy and species balances of a reacting kiln.
+    """Solve the steady energy and species balances of a kiln (inert or reacting).
 
     Parameters
     ----------

@@ -1,16 +1,17 @@
-"""Driver shared by the two steady kilns (heat model, reacting model).
+"""Newton driver of the steady kiln (:func:`rotarykiln.kiln.solve.solve_kiln`).
 
-- :func:`initial_temperatures`: the linear bed/gas/wall guess both solvers start from;
+- :func:`initial_temperatures`: the linear bed/gas/wall guess the solver starts from;
 - :func:`equation_names` and :func:`locator`: what each unknown's balance is called, for
   error messages;
 - :func:`newton_with_continuation`: banded Newton from the guess, and on failure a
   continuation, given as a list of :func:`ramp` stages (a parameter of the residual ramped
   0 -> 1, in fixed or adaptive steps);
 - :func:`newton_sequenced`: the same from a grid-sequenced start (the unknowns solved on a
-  coarser grid, interpolated by :func:`interpolate_unknowns`), for fine grids of the reacting
-  kiln: the damped first Newton iterations then run on the cheap coarse grid;
+  coarser grid, interpolated by :func:`interpolate_unknowns`), for kilns with reactions and
+  fine grids of inert kilns: the damped first Newton iterations then run on the cheap coarse
+  grid;
 - :func:`check_finite`: no non-finite value leaves a solver;
-- :func:`profile_fields`: the temperature profiles and solver figures both solutions hold.
+- :func:`profile_fields`: the temperature profiles and solver figures a solution holds.
 """
 
 from __future__ import annotations
@@ -241,7 +242,7 @@ def check_finite(profiles: dict, per_cell: dict, z, iterations: int) -> None:
 
 
 def profile_fields(grid, t_bed_nodes, t_gas_nodes, t_wall, fluxes: dict, R, scale, iterations):
-    """Fields shared by both kiln solutions: faces and cells, temperatures, fluxes, solver.
+    """Fields of a kiln solution from the solver: faces and cells, temperatures, fluxes, solver.
 
     ``t_wall``: the wall unknowns (K, ``(n, n_wall)``, inner surface first); ``fluxes``: the
     per-cell dict of the residual (its ``t_bed_mean`` and ``t_gas_mean`` become ``t_bed`` and

@@ -1,10 +1,10 @@
-r"""The kiln wall of the steady kilns: a lined wall with shell loss, or a constant U.
+r"""The kiln wall: a lined wall with shell loss, or a constant U.
 
-Both kilns solve the inner-wall temperature of every cell; the wall model says how many more
+The kiln solves the inner-wall temperature of every cell; the wall model says how many more
 temperatures it has and which balances close them. Per metre of kiln, with
 :math:`Q_{in} = Q_{gw} + Q_{rw} - Q_{cw}` the heat the inner surface receives:
 
-- :class:`LinedWall` (the heat model's wall): layers with :math:`k(T)` between radii
+- :class:`LinedWall` (a wall with ``layers``): layers with :math:`k(T)` between radii
   :math:`r_k`, temperatures at the inner surface, every interface and the shell;
   :math:`q_k = 2\pi[K(T_k) - K(T_{k+1})]/\ln(r_{k+1}/r_k)`, shell loss by natural (and
   wind) convection plus radiation (:func:`rotarykiln.heat.wall.shell_heat_loss`):
