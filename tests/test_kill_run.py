@@ -20,6 +20,7 @@ commit, whole (a run killed before left it empty).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import random
@@ -177,11 +178,14 @@ def test_a_signal_after_the_commit_still_gives_its_exit_code(tmp_path):
         while not os.path.exists(manifest) and p.poll() is None:
             pass  # no sleep: the run ends within milliseconds of its commit
         time.sleep(extra)
-        os.kill(p.pid, signal.SIGSTOP)  # frozen where it is: the signal lands exactly here
-        live = _alive(p.pid)
-        if live:
-            p.send_signal(sig)
-        os.kill(p.pid, signal.SIGCONT)
+        live = False
+        if p.poll() is None:  # not reaped yet (poll reaps a process that has ended)
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(p.pid, signal.SIGSTOP)  # frozen where it is: the signal lands here
+                live = _alive(p.pid)
+                if live:
+                    p.send_signal(sig)
+                os.kill(p.pid, signal.SIGCONT)
         _, err = p.communicate(timeout=120)
         where = f"{sig.name} {extra} s after the commit: exit {p.returncode}, {err[-300:]!r}"
         assert "Traceback" not in err, where

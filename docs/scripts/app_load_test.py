@@ -5,10 +5,11 @@ runs ``--clients`` threads that each post the Run callback with a heavy case (th
 rotary_pyrolysis case at the most cells the app runs) as fast as they are answered (pausing
 ``--pause`` s after a busy answer), while one more client posts a light run (tscheng_A16) every
 ``--light-every`` s and times its answer. Every request's answer is counted by kind; the server's
-resident memory (and its worker's) is sampled every 0.2 s.
+resident memory and its two workers' (the heavy runs' and the light runs', told apart by their
+command line) are sampled every 0.2 s.
 
 Reported: the light run's answer time (median, max) and outcomes, the heavy runs' outcomes, the
-server's peak memory, and whether the server answered every request (a request with no HTTP
+server's and the workers' peak memory, and whether the server answered every request (a request with no HTTP
 answer, a timeout or a refused connection, is counted as unanswered).
 
     python docs/scripts/app_load_test.py                   # 20 clients, 60 s
@@ -56,6 +57,16 @@ def _children(pid: int) -> list[int]:
         except OSError:
             pass
     return out
+
+
+def _worker_name(pid: int) -> str:
+    """The name a worker has on its command line (``heavy``, ``light``), else ``worker``."""
+    try:
+        args = Path(f"/proc/{pid}/cmdline").read_bytes().split(b"\0")
+    except OSError:
+        return "worker"
+    names = [a.decode() for a in args if a in (b"heavy", b"light")]
+    return names[0] if names else "worker"
 
 
 def _kind(answer) -> str:
@@ -106,16 +117,21 @@ def load_test(url: str, pid: int, clients: int, seconds: float, pause: float, li
     busy_times: list[float] = []
     light: list[tuple[str, float]] = []
     unanswered: list[str] = []
-    peaks = {"server": _rss(pid), "worker": 0}
+    peaks = {"server": _rss(pid), "heavy": 0, "light": 0, "worker": 0, "workers": 0}
     workers: set[int] = set()
     stop = threading.Event()
 
     def sample():
         while not stop.is_set():
             peaks["server"] = max(peaks["server"], _rss(pid))
+            total = 0
             for child in _children(pid):
                 workers.add(child)
-                peaks["worker"] = max(peaks["worker"], _rss(child))
+                rss = _rss(child)
+                total += rss
+                name = _worker_name(child)
+                peaks[name] = max(peaks[name], rss)
+            peaks["workers"] = max(peaks["workers"], total)  # both at the same moment
             stop.wait(0.2)
 
     def heavy_client(i: int):
@@ -185,7 +201,12 @@ def load_test(url: str, pid: int, clients: int, seconds: float, pause: float, li
             "max": round(max(done), 2) if done else None,
         },
         "server_peak_rss_MB": round(peaks["server"] / 1e6, 1),
-        "worker_peak_rss_MB": round(peaks["worker"] / 1e6, 1),
+        "worker_peak_rss_MB": {
+            name: round(peaks[name] / 1e6, 1)
+            for name in ("heavy", "light", "worker")
+            if peaks[name] or name != "worker"
+        },
+        "workers_peak_total_MB": round(peaks["workers"] / 1e6, 1),
         "unanswered": len(unanswered),
         "unanswered_examples": unanswered[:5],
         "worker_pids": sorted(workers),
@@ -208,13 +229,13 @@ def main(argv: list[str] | None = None) -> int:
         parser.error("--clients in [1, 100], --seconds in [1, 600]")
     process, url = start_server()
     try:
-        time.sleep(3)  # the worker's imports
+        time.sleep(3)  # the workers' imports
         report = load_test(
             url, process.pid, args.clients, args.seconds, args.pause, args.light_every
         )
         report["server_alive"] = process.poll() is None
     finally:
-        process.send_signal(signal.SIGINT)  # Ctrl+C: the server stops its worker
+        process.send_signal(signal.SIGINT)  # Ctrl+C: the server stops its workers
         try:
             process.wait(timeout=20)
         except subprocess.TimeoutExpired:

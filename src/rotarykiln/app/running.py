@@ -3,13 +3,14 @@ the files for download.
 
 Each run gets its own folder under one temporary root (removed when the app stops); the last
 :data:`KEEP_RUNS` runs are kept. A run is done by a worker process
-(:class:`~rotarykiln.app.worker.Worker`), one at a time, within bounds no client can lift: at
-most :data:`~rotarykiln.app.checks.MAX_APP_CELLS` cells, :data:`MAX_RUN_SECONDS` and
-:data:`MAX_RUN_BYTES` of memory (the worker is killed beyond them), and at most
-:data:`MAX_WAITING` runs waiting for their turn: one more is refused at once
-(:class:`ServerBusy`) instead of waiting. Light runs (at most :data:`LIGHT_CELLS` cells, such
-as every built-in case) have a lane of their own and are served first, so that heavy runs never
-hold one up for more than the run in progress. The page gets the profiles thinned to
+(:class:`~rotarykiln.app.worker.Worker`) within bounds no client can lift: at most
+:data:`~rotarykiln.app.checks.MAX_APP_CELLS` cells, :data:`MAX_RUN_SECONDS` and
+:data:`MAX_RUN_BYTES` of memory (the worker is killed beyond them). There are two lanes, each
+with a worker of its own that runs one case at a time: heavy runs (at most :data:`MAX_WAITING`
+waiting behind the one running) and light runs (at most :data:`LIGHT_CELLS` cells, such as every
+built-in case; at most :data:`LIGHT_WAITING` waiting), so that a light run never waits behind a
+heavy one. A run whose lane is full is refused at once (:class:`ServerBusy`) instead of
+waiting. The page gets the profiles thinned to
 :data:`MAX_SHOWN_POINTS` rows (the tables for download keep every cell), and the results of the
 case's other models (bed profile, RTD, transverse results: :mod:`rotarykiln.app.results`).
 """
@@ -65,15 +66,15 @@ MAX_SHOWN_POINTS = 400
 LIGHT_CELLS = 200
 """Runs of at most this many cells are light: they have a lane of their own, served first."""
 LIGHT_WAITING = 1
-"""Most light runs waiting for their turn (besides the heavy ones)."""
+"""Most light runs waiting for their turn behind the light run in progress."""
 _RECYCLE_BYTES = 800_000_000  # a worker grown past this after a run is replaced
 
 _OUTLET = re.compile(r"(^|_)bed_outlet_temperature_K$")
 
 
 class ServerBusy(RuntimeError):
-    """A run refused at once: one is running and its lane is full (:data:`MAX_WAITING` heavy
-    runs, or :data:`LIGHT_WAITING` light ones, waiting)."""
+    """A run refused at once: its lane is full (a run in progress and :data:`MAX_WAITING`
+    heavy runs, or :data:`LIGHT_WAITING` light ones, waiting)."""
 
 
 def outlet_temperature(summary: dict) -> tuple[str, float] | None:
@@ -127,8 +128,9 @@ def _plain(value: Any) -> Any:
 
 
 class RunStore:
-    """Run folders of one app, under a temporary root removed at exit, and the worker process
-    that runs the cases (started at the first run, or by :meth:`start`; :meth:`close` ends it).
+    """Run folders of one app, under a temporary root removed at exit, and the two worker
+    processes that run the cases, one for heavy runs and one for light runs (each started at
+    its lane's first run, or both by :meth:`start`; :meth:`close` ends them).
 
     Parameters
     ----------
@@ -161,12 +163,12 @@ class RunStore:
         self.max_bytes = max_bytes
         self.max_waiting = max_waiting
         self.max_cells = max_cells
-        self._heavy: collections.deque = collections.deque()  # heavy runs, running or waiting
-        self._light: collections.deque = collections.deque()  # light ones
-        self._running: object | None = None
+        # each lane: its run in progress (the first) and those waiting, and its worker
+        self._heavy: collections.deque = collections.deque()
+        self._light: collections.deque = collections.deque()
         self._changed = threading.Condition()
         self._order: list[str] = []
-        self._worker: Worker | None = None
+        self._workers: dict[bool, Worker | None] = {False: None, True: None}  # light -> worker
         atexit.register(self.close)
 
     def folder(self, run_id: str) -> Path | None:
@@ -177,22 +179,36 @@ class RunStore:
         return path if path.is_dir() else None
 
     def start(self) -> RunStore:
-        """Start the worker process now (it takes about 2 s) rather than at the first run."""
-        with self._changed:
-            if self._worker is None or not self._worker.alive():
-                self._worker = Worker()
+        """Start both worker processes now (each takes about 2 s to import the models) rather
+        than at the first run of each lane."""
+        self._worker(False)
+        self._worker(True)
         return self
 
-    def close(self) -> None:
-        """End the worker process (a run in progress is stopped)."""
-        worker, self._worker = self._worker, None
-        if worker is not None:
-            worker.stop()
+    def _worker(self, light: bool) -> Worker:
+        """The worker of a lane, a new one when it has none or it ended."""
+        with self._changed:
+            worker = self._workers[light]
+            if worker is None or not worker.alive():
+                worker = self._workers[light] = Worker("light" if light else "heavy")
+            return worker
 
-    def worker_pid(self) -> int | None:
-        """The process id of the worker, if one is running."""
-        worker = self._worker
+    def close(self) -> None:
+        """End both worker processes (a run in progress is stopped)."""
+        for light in (False, True):
+            worker, self._workers[light] = self._workers[light], None
+            if worker is not None:
+                worker.stop()
+
+    def worker_pid(self, light: bool = False) -> int | None:
+        """The process id of the heavy runs' worker (``light``: the light runs'), if one is
+        running."""
+        worker = self._workers[light]
         return worker.pid if worker is not None and worker.alive() else None
+
+    def worker_pids(self) -> list[int]:
+        """The process ids of the workers running (heavy, then light)."""
+        return [pid for pid in (self.worker_pid(False), self.worker_pid(True)) if pid]
 
     def check_free(self, light: bool | None = None) -> None:
         """Refuse at once when a run cannot wait for its turn now: a heavy run (``light``
@@ -201,8 +217,8 @@ class RunStore:
         Raises
         ------
         ServerBusy
-            The run's lane is full: a run is running and :attr:`max_waiting` heavy runs (or
-            :data:`LIGHT_WAITING` light ones) are waiting.
+            The run's lane is full: a run is running in it and :attr:`max_waiting` heavy runs
+            (or :data:`LIGHT_WAITING` light ones) are waiting.
         """
         heavy_full = len(self._heavy) > self.max_waiting
         light_full = len(self._light) > LIGHT_WAITING
@@ -211,7 +227,7 @@ class RunStore:
         else:
             full = light_full if light else heavy_full
         if full:
-            waiting = len(self._heavy) + len(self._light) - (self._running is not None)
+            waiting = len(self._light if light else self._heavy) - 1
             raise ServerBusy(
                 f"the server is busy (a run and {waiting} waiting): try again in a minute"
             )
@@ -227,32 +243,26 @@ class RunStore:
 
     @contextlib.contextmanager
     def _turn(self, light: bool):
-        """Wait for this run's turn, or refuse at once when its lane is full. The worker takes
-        the oldest light run first, else the oldest heavy one."""
+        """Wait for this run's turn in its lane (the lane's worker takes its oldest run), or
+        refuse at once when the lane is full. The lanes do not wait for each other."""
         token = object()
         lane = self._light if light else self._heavy
-
-        def mine() -> bool:
-            if self._running is not None or lane[0] is not token:
-                return False
-            return light or not self._light
 
         with self._changed:
             self.check_free(light)
             lane.append(token)
             # the runs ahead end within their bound, so this wait does too (the timeout: a guard)
-            bound = (self.max_waiting + LIGHT_WAITING + 1) * (self.max_seconds + START_SECONDS)
-            if not self._changed.wait_for(mine, timeout=bound):
+            ahead = LIGHT_WAITING if light else self.max_waiting
+            bound = (ahead + 1) * (self.max_seconds + START_SECONDS)
+            if not self._changed.wait_for(lambda: lane[0] is token, timeout=bound):
                 lane.remove(token)
                 self._changed.notify_all()
                 raise ServerBusy("the server is busy: try again in a minute")
-            self._running = token
         try:
             yield
         finally:
             with self._changed:
                 lane.remove(token)
-                self._running = None
                 self._changed.notify_all()
 
     def run(self, raw: dict, source: str = "case") -> RunResult:
@@ -266,25 +276,29 @@ class RunStore:
         ConvergenceError
             A solver failed.
         ServerBusy
-            A run is running and :attr:`max_waiting` are waiting: refused at once.
+            The run's lane is full (:meth:`check_free`): refused at once.
         RunStopped
             The run went over :attr:`max_seconds` or :attr:`max_bytes` and was stopped.
         """
         case = parse_app_case(raw, source=source)
         check_run_size(case, self.max_cells)
-        with self._turn(case.solver.cells <= LIGHT_CELLS):
+        light = case.solver.cells <= LIGHT_CELLS
+        with self._turn(light):
             run_id = uuid.uuid4().hex
             out = self.root / run_id
             out.mkdir()
             try:
-                answer = self._in_worker(raw, out, source)
+                answer = self._in_worker(light, raw, out, source)
             except BaseException:
                 shutil.rmtree(out, ignore_errors=True)
                 raise
             (out / "case.yaml").write_text(case_to_yaml(case), encoding="utf-8")
-            self._order.append(run_id)
-            while len(self._order) > self.keep:
-                shutil.rmtree(self.root / self._order.pop(0), ignore_errors=True)
+            with self._changed:  # the two lanes finish runs at the same time
+                self._order.append(run_id)
+                removed = self._order[: max(0, len(self._order) - self.keep)]
+                del self._order[: len(removed)]
+            for old in removed:
+                shutil.rmtree(self.root / old, ignore_errors=True)
             summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
             profiles, files = _profiles(out), _files(out)
         return RunResult(
@@ -297,18 +311,19 @@ class RunStore:
             models=dict(answer.get("models") or {}),
         )
 
-    def _in_worker(self, raw: dict, out: Path, source: str) -> dict:
-        """Run in the worker (one is started when there is none); a worker stopped, ended or
-        grown large is replaced at the next run."""
-        self.start()
-        worker = self._worker
+    def _in_worker(self, light: bool, raw: dict, out: Path, source: str) -> dict:
+        """Run in the lane's worker (one is started when there is none); a worker stopped,
+        ended or grown large is replaced at the lane's next run."""
+        worker = self._worker(light)
         try:
             return worker.run(raw, out, source, self.max_seconds, self.max_bytes)
         finally:
             rss = process_rss(worker.pid) if worker.alive() else None
             if not worker.alive() or (rss is not None and rss > _RECYCLE_BYTES):
                 worker.stop()
-                self._worker = None
+                with self._changed:
+                    if self._workers[light] is worker:
+                        self._workers[light] = None
 
 
 _ORDER = {".html": 0, ".yaml": 1, ".csv": 2, ".json": 3, ".txt": 4, ".png": 5, ".svg": 5}

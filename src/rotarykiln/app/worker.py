@@ -2,9 +2,11 @@
 
 The web server does not run a case itself: it sends the case to a :class:`Worker` (a new Python
 process, ``python -m rotarykiln.app.worker``: nothing of the server's threads is copied into it)
-over a socket pair and waits for its answer, at most a given time. A run over its time or memory bound is stopped by killing the
-process (a solver cannot be interrupted from another thread), which frees all its memory; the
-next run starts a new one. The worker ends when the server's process ends, even killed: it checks
+over a socket pair and waits for its answer, at most a given time. A run over its time or memory
+bound is stopped by killing the process (a solver cannot be interrupted from another thread),
+which frees all its memory; the next run starts a new one. The app has two workers, one per lane
+of runs (:class:`~rotarykiln.app.running.RunStore`); each is named on its command line
+(``heavy``, ``light``). The worker ends when the server's process ends, even killed: it checks
 its parent twice a second, and a closed pipe ends it too.
 """
 
@@ -47,9 +49,13 @@ def process_rss(pid: int) -> int | None:
 
 class Worker:
     """One process that runs cases as ``rotarykiln run --report`` does, one at a time (and
-    the transverse section of a case as ``rotarykiln transverse`` does, within its bound)."""
+    the transverse section of a case as ``rotarykiln transverse`` does, within its bound).
 
-    def __init__(self):
+    ``name`` is shown on the process's command line (``python -m rotarykiln.app.worker FD PID
+    NAME``), so that ``ps`` tells the workers apart."""
+
+    def __init__(self, name: str = "worker"):
+        self.name = name
         ours, theirs = socket.socketpair()
         try:
             self.process = subprocess.Popen(
@@ -59,6 +65,7 @@ class Worker:
                     "rotarykiln.app.worker",
                     str(theirs.fileno()),
                     str(os.getpid()),
+                    name,
                 ],
                 pass_fds=(theirs.fileno(),),
                 stdin=subprocess.DEVNULL,
@@ -219,5 +226,5 @@ def _run_case(case, out: Path, source: str) -> dict:
     return {"warnings": shown, "models": models}
 
 
-if __name__ == "__main__":  # python -m rotarykiln.app.worker FD PARENT_PID (started by Worker)
+if __name__ == "__main__":  # python -m rotarykiln.app.worker FD PARENT_PID [NAME] (by Worker)
     _main(Connection(int(sys.argv[1])), int(sys.argv[2]))
