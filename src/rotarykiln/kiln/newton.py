@@ -22,7 +22,7 @@ from rotarykiln.errors import ConvergenceError
 
 log = logging.getLogger(__name__)
 
-__all__ = ["NewtonReport", "newton_banded"]
+__all__ = ["NewtonReport", "band_entries", "colour_batch", "newton_banded"]
 
 #: A Newton iteration whose line search cannot reduce a residual already within this factor of
 #: the tolerance has reached round-off: it is accepted as converged.
@@ -70,14 +70,35 @@ def _jacobian_pattern(n: int, nv: int):
     return perturbed.ravel(), np.concatenate(src), np.concatenate(dst), np.concatenate(step)
 
 
+def colour_batch(x, h):
+    """The ``3 nv`` coloured perturbations of ``x`` (n, nv) by the steps ``h`` (n, nv): colour
+    ``(c, v)`` perturbs variable ``v`` of the cells ``j = c mod 3``, ``X[c nv + v, j, v] =
+    x[j, v] + h[j, v]``; a residual of the batch gives every band entry once."""
+    n, nv = x.shape
+    perturbed = _jacobian_pattern(n, nv)[0]
+    X = np.broadcast_to(x, (3 * nv, n, nv)).copy()
+    X.ravel()[perturbed] = (x + h).ravel()
+    return X
+
+
+@lru_cache(maxsize=16)
+def band_entries(n: int, nv: int):
+    """``src``, ``rows``, ``cols``, ``step`` of every band entry of the coloured Jacobian of
+    :func:`colour_batch`: its place in the flattened differences ``dR[c, v, r, w]``, its row
+    ``r nv + w`` and column ``j nv + v`` in the flattened unknowns, and its step in ``h``
+    flattened (for a sparse matrix; :func:`_banded_jacobian` fills the banded layout)."""
+    _, src, dst, step = _jacobian_pattern(n, nv)
+    size, bw = n * nv, 2 * nv - 1
+    cols = dst % size
+    rows = cols + dst // size - bw
+    return src, rows, cols, step
+
+
 def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
     n, nv = x.shape
-    ncol = 3 * nv
     h = rel_step * np.maximum(np.abs(x), step_floor)
-    perturbed, src, dst, step = _jacobian_pattern(n, nv)
-    # colour (c, v) perturbs variable v of the cells j = c mod 3: X[c, v, j, v] = x[j, v] + h
-    X = np.broadcast_to(x, (ncol, n, nv)).copy()
-    X.ravel()[perturbed] = (x + h).ravel()
+    _, src, dst, step = _jacobian_pattern(n, nv)
+    X = colour_batch(x, h)
     dR = F(X) - R0  # [c, v, row cell, equation]
     bw = 2 * nv - 1
     ab = np.zeros((2 * bw + 1, n * nv))

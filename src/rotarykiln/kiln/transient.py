@@ -29,11 +29,14 @@ A non-reacting tracer rides with the bed: its mass :math:`m_j` in each cell leav
 (:func:`~rotarykiln.kiln.dispersion.dispersion_sources`); a pulse in the feed gives the RTD of
 the dynamic model.
 
-The system is integrated by scipy's BDF (variable order, implicit, stiff) with the sparsity of
-the block-tridiagonal structure (``jac_sparsity``: a finite-difference Jacobian in 3 x block
-evaluations). Quadrature states integrate the energy and every species across the two ends
-(feed, discharge, gas inlet and outlet), the shell loss, the heat released and the heat of
-reaction, so the energy and element balances over time are checked against the inventories.
+The system is integrated by scipy's BDF (variable order, implicit, stiff) with the Jacobian
+built the steady model's way (:meth:`TransientKiln.jacobian`): the block-tridiagonal band by
+forward differences in 3 x block colours (:func:`~rotarykiln.kiln.newton.colour_batch`), all
+evaluated in one batched call of the right-hand side, as a sparse matrix; BDF reuses it across
+steps as long as its Newton iteration converges. Quadrature states integrate the energy and
+every species across the two ends (feed, discharge, gas inlet and outlet), the shell loss, the
+heat released and the heat of reaction, so the energy and element balances over time are
+checked against the inventories.
 
 References
 ----------
@@ -49,7 +52,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import BDF
-from scipy.sparse import lil_matrix
+from scipy.sparse import csc_matrix, lil_matrix
 
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln.dispersion import dispersion_sources
@@ -62,6 +65,7 @@ from rotarykiln.kiln.events import (
     shallow_with,
 )
 from rotarykiln.kiln.holdup import Holdup, WallProperties, refine_lining
+from rotarykiln.kiln.newton import band_entries, colour_batch
 from rotarykiln.kiln.residual import T_FLOOR, KilnResidual
 from rotarykiln.kiln.transient_result import TransientSolution
 
@@ -71,6 +75,11 @@ __all__ = ["TransientResidual", "TransientKiln", "simulate"]
 RATE_FLOOR = 1e-6
 #: Temperature step of the numerical heat capacity dh/dT, K.
 CP_STEP = 1e-3
+#: Relative step of the finite-difference Jacobian (the steady Newton's), of max(|y|, floor).
+JAC_STEP = 1e-7
+#: Floors of the Jacobian steps: temperatures (K), species flows (over the inlet flows, the
+#: steady solve's), tracer mass (kg; the tracer rows are linear in it).
+JAC_FLOOR_T, JAC_FLOOR_SPECIES, JAC_FLOOR_TRACER = 1.0, 1e-6, 1.0
 
 
 class TransientResidual(KilnResidual):
@@ -180,6 +189,14 @@ class TransientKiln:
         self.n_acc = 1 + res.nb + res.ng  # energy, bed species, gas species across boundaries
         self.size = self.n * self.m + self.n_acc
         self.holdup: Holdup | None = None
+        self.jac_floor = np.concatenate(
+            [
+                np.full(res.i_species, JAC_FLOOR_T),
+                np.full(res.nv - res.i_species, JAC_FLOOR_SPECIES),
+                [JAC_FLOOR_TRACER],
+            ]
+        )
+        self._jac_structure = None
 
     # --- states --------------------------------------------------------------------------
     def steady_state(self, kiln=None, **kw):
@@ -373,6 +390,38 @@ class TransientKiln:
         out["gas_outlet"] = {n: float(qg[0, go, i]) for i, n in enumerate(res.gas_names)}
         return out
 
+    def jacobian(self, t, y, schedule: Schedule, run: _Run):
+        """d(dy/dt)/dy at ``t``, ``y`` (CSC), the steady Newton's way: forward differences on
+        the block-tridiagonal band in ``3 m`` colours (cells ``j = c mod 3`` perturbed together
+        for one variable, :func:`~rotarykiln.kiln.newton.colour_batch`), all evaluated with
+        the unperturbed state in one batched call of :meth:`rhs`. Steps ``JAC_STEP``
+        x max(|y|, floor). The quadrature rows and columns are left empty, as in
+        :meth:`sparsity`."""
+        n, m = self.n, self.m
+        nm = n * m
+        src, step, indices, indptr, order = self._structure()
+        blk = y[:nm].reshape(n, m)
+        h = JAC_STEP * np.maximum(np.abs(blk), self.jac_floor)
+        h = (blk + h) - blk  # the step actually taken
+        Y = np.empty((self.size, 3 * m + 1))
+        Y[:nm, :-1] = colour_batch(blk, h).reshape(3 * m, nm).T
+        Y[:nm, -1] = y[:nm]
+        Y[nm:] = y[nm:, None]
+        F = self.rhs(t, Y, schedule, run)
+        dR = F[:nm, :-1].T - F[:nm, -1]  # [colour, row]
+        data = dR.ravel()[src] / h.ravel()[step]
+        return csc_matrix((data[order], indices, indptr), shape=(self.size, self.size))
+
+    def _structure(self):
+        """The band entries (:func:`~rotarykiln.kiln.newton.band_entries`) and their CSC
+        layout, computed once."""
+        if self._jac_structure is None:
+            src, rows, cols, step = band_entries(self.n, self.m)
+            order = np.lexsort((rows, cols))
+            indptr = np.searchsorted(cols[order], np.arange(self.size + 1))
+            self._jac_structure = (src, step, rows[order], indptr, order)
+        return self._jac_structure
+
     def sparsity(self):
         """Block-tridiagonal pattern of the Jacobian (quadrature rows left empty: they
         feed back into nothing, and their Newton update is exact without them)."""
@@ -472,7 +521,6 @@ def simulate(
     blk[:, tk.nv] = rtol * 1e-3 * tr_scale
     acc_scale = np.concatenate([[1.0 / rtol], np.full(res.nb + res.ng, 1e-9 / rtol)])
     atol[tk.n * tk.m :] = rtol * acc_scale
-    S = tk.sparsity()
     run = _Run()
     from rotarykiln.progress import progress_bar, progress_enabled
 
@@ -485,7 +533,9 @@ def simulate(
         for i, (a, b) in enumerate(sched.segments()):
             run.segment = i
             te = times[(times >= a) & (times <= b)]
-            ts, ys = _integrate(tk.rhs, a, b, y, te, S, rtol, atol, (sched, run), newton_tol, bar)
+            ts, ys = _integrate(
+                tk.rhs, tk.jacobian, a, b, y, te, rtol, atol, (sched, run), newton_tol, bar
+            )
             for tt, yy in zip(ts, ys, strict=True):
                 if stamp and tt <= stamp[-1][0]:
                     continue  # a segment's first time is the previous one's last (left limit kept)
@@ -501,7 +551,7 @@ def simulate(
     return _collect(tk, sched, stamp, states, steady, wall_time, run.calls, transient)
 
 
-def _integrate(fun, a, b, y0, t_eval, sparsity, rtol, atol, args, newton_tol, bar):
+def _integrate(fun, jac, a, b, y0, t_eval, rtol, atol, args, newton_tol, bar):
     """BDF from ``a`` to ``b`` (s): the states at ``t_eval`` (``b`` included).
 
     scipy's :class:`~scipy.integrate.BDF` stepped by hand (as ``solve_ivp`` does) to set a
@@ -516,8 +566,7 @@ def _integrate(fun, a, b, y0, t_eval, sparsity, rtol, atol, args, newton_tol, ba
         b,
         rtol=rtol,
         atol=atol,
-        jac_sparsity=sparsity,
-        vectorized=True,
+        jac=lambda t, y: jac(t, y, *args),
     )
     if newton_tol is not None:
         solver.newton_tol = newton_tol
