@@ -37,6 +37,7 @@ __all__ = [
     "YamlLimitError",
     "check_structure",
     "load_yaml_text",
+    "read_file_within",
     "read_yaml_file",
     "short_repr",
     "show_value",
@@ -319,32 +320,66 @@ def read_yaml_file(
     ...
     rotarykiln.errors.InputError: no/such/file.yaml: no such species file
     """
-    path = Path(path)
     label = str(path) if label is None else label
+    raw = read_file_within(path, MAX_YAML_BYTES, label=label, what=what, note=f"; {_hint(what)}")
+    return load_yaml_text(raw, label, what=what, content=content)
+
+
+def read_file_within(
+    path, max_bytes: int, *, label: str, what: str, field: str | None = None, note: str = ""
+) -> bytes:
+    """The bytes of the file ``path``, refused in one line when it is missing, a folder,
+    unreadable, not a file name, or larger than ``max_bytes``: the size is checked before
+    reading, and at most ``max_bytes`` + 1 bytes are read (a growing file or a device such as
+    ``/dev/zero`` cannot exhaust memory). The one reader of every input file's bytes.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file.
+    max_bytes : int
+        The size limit, bytes.
+    label : str
+        How messages name the file (``"--data: run.csv"``).
+    what : str
+        What the file is (``"species file"``, ``"tracer file"``).
+    field : str, optional
+        The field of the :class:`InputError` (default: ``label``).
+    note : str
+        Appended to the limit in the "too large" message.
+
+    Examples
+    --------
+    >>> read_file_within("no/such.csv", 100, label="--data: no/such.csv", what="data file")
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: --data: no/such.csv: no such data file
+    """
+    field = label if field is None else field
+    path = Path(path)
     try:
         size = path.stat().st_size
-        if size > MAX_YAML_BYTES:
-            raw = b""
-        else:
-            with path.open("rb") as fh:  # at most the limit + 1 byte: /dev/zero, a growing file
-                raw = fh.read(MAX_YAML_BYTES + 1)
+        raw = b""
+        if size <= max_bytes:
+            with path.open("rb") as fh:
+                raw = fh.read(max_bytes + 1)
     except FileNotFoundError:
-        raise InputError(label, message=f"{label}: no such {what}") from None
+        raise InputError(field, message=f"{label}: no such {what}") from None
     except IsADirectoryError:
-        raise InputError(label, message=f"{label}: a folder, not a {what}") from None
+        raise InputError(field, message=f"{label}: a folder, not a {what}") from None
     except OSError as exc:
         reason = exc.strerror or type(exc).__name__
-        raise InputError(label, message=f"{label}: cannot read ({reason})") from None
+        raise InputError(field, message=f"{label}: cannot read ({reason})") from None
     except ValueError:  # a NUL character in the path
-        raise InputError(label, message=f"{label}: not a file name") from None
-    if size > MAX_YAML_BYTES or len(raw) > MAX_YAML_BYTES:
-        shown = f"{size / 1e6:.3g} MB" if size > MAX_YAML_BYTES else "more than that"
+        raise InputError(field, message=f"{label}: not a file name") from None
+    if size > max_bytes or len(raw) > max_bytes:
+        shown = f"{size / 1e6:.3g} MB" if size > max_bytes else "more than that"
         raise InputError(
-            label,
-            message=f"{label}: {shown} is too large for a {what} (at most "
-            f"{MAX_YAML_BYTES / 1e6:g} MB; {_hint(what)})",
+            field,
+            message=f"{label}: {shown} is too large for a {what} "
+            f"(at most {max_bytes / 1e6:g} MB{note})",
         )
-    return load_yaml_text(raw, label, what=what, content=content)
+    return raw
 
 
 def check_structure(data: Any, source: str) -> None:

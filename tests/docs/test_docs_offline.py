@@ -94,52 +94,16 @@ def test_vendored_katex_is_complete():
     assert not missing, f"font files the css needs: {missing}"
 
 
-CHROMIUM = os.environ.get("ROTARYKILN_CHROMIUM") or shutil.which("chromium") or "/usr/bin/chromium"
-CHROMEDRIVER = (
-    os.environ.get("ROTARYKILN_CHROMEDRIVER")
-    or shutil.which("chromedriver")
-    or "/usr/bin/chromedriver"
-)
-
-
-def _missing(reason: str):
-    """As the app's browser tests: skipped on a developer's machine, a failure under CI."""
-    if os.environ.get("CI"):
-        pytest.fail(f"{reason} (make test installs it)")
-    pytest.skip(reason)
-
-
 @pytest.fixture(scope="module")
-def offline_browser():
+def offline_browser(chromium):
     """Headless Chromium with the network cut: every fetch goes to a dead proxy port."""
-    try:
-        from selenium import webdriver
-    except ImportError:
-        _missing("selenium is not installed (pip install -e '.[test]')")
-    for path in (CHROMIUM, CHROMEDRIVER):
-        if not Path(path).is_file():
-            _missing(f"{path} not found (Debian: apt-get install chromium chromium-driver)")
-    os.environ.setdefault("SE_OFFLINE", "true")  # Selenium Manager fetches nothing
-    from selenium.webdriver.chrome.service import Service
-
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for arg in (
-        "--headless=new",
-        "--no-sandbox",
-        "--disable-dev-shm-usage",
-        "--disable-gpu",
-        "--window-size=1200,900",
-        "--disable-extensions",
-        "--no-first-run",
+    driver = chromium(
         "--disable-background-networking",
         "--proxy-server=http://127.0.0.1:9",  # nothing listens there: any fetch fails
         "--proxy-bypass-list=<-loopback>",
         "--allow-file-access-from-files",
-    ):
-        options.add_argument(arg)
-    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
-    driver.set_page_load_timeout(30)
+        window="1200,900",
+    )
     try:
         yield driver
     finally:

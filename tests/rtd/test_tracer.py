@@ -130,7 +130,7 @@ def test_read_csv_errors(tmp_path, text, match):
     p.write_text(text)
     with pytest.raises(InputError, match=match):
         read_tracer_csv(p)
-    with pytest.raises(InputError, match="no such file"):
+    with pytest.raises(InputError, match="no such tracer file"):
         read_tracer_csv(tmp_path / "missing.csv")
 
 

@@ -44,8 +44,8 @@ def test_text_that_is_not_utf8_or_not_a_table_is_refused_in_one_line(tmp_path):
     _refused(p, "not a readable CSV table")
     p.write_text('a,b\n1,"2\n')  # an unterminated quote
     _refused(p, "not a readable CSV table")
-    _refused(tmp_path / "missing.csv", "no such file")
-    _refused(tmp_path, "cannot read")
+    _refused(tmp_path / "missing.csv", "no such data file")
+    _refused(tmp_path, "a folder, not a data file")
 
 
 def test_a_byte_order_mark_is_accepted(tmp_path):
@@ -55,7 +55,7 @@ def test_a_byte_order_mark_is_accepted(tmp_path):
 
 
 def test_a_file_name_with_a_newline_is_escaped(tmp_path):
-    msg = _refused(tmp_path / "a\nb.csv", "no such file")
+    msg = _refused(tmp_path / "a\nb.csv", "no such data file")
     assert "\\n" in msg
 
 

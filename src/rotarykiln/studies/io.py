@@ -17,6 +17,7 @@ import pandas as pd
 
 from rotarykiln.errors import InputError
 from rotarykiln.outputs import atomic_path, save_figure_atomic, write_frame_atomic
+from rotarykiln.yaml_limits import read_file_within
 
 __all__ = [
     "MAX_DATA_BYTES",
@@ -99,24 +100,9 @@ def read_data_csv(
     name = shown(str(path), 200)
     where = f"{option}: {name}" if option else name
     option = option or name
-    path = Path(path)
-    try:
-        size = path.stat().st_size
-        raw = b""
-        if size <= max_bytes:
-            with path.open("rb") as fh:  # at most the limit + 1 byte
-                raw = fh.read(max_bytes + 1)
-    except FileNotFoundError:
-        raise InputError(option, message=f"{where}: no such file") from None
-    except OSError as exc:
-        raise InputError(option, message=f"{where}: cannot read ({exc.strerror})") from None
-    if size > max_bytes or len(raw) > max_bytes:
-        big = f"{size / 1e6:.3g} MB" if size > max_bytes else "more than that"
-        raise InputError(
-            option,
-            message=f"{where}: {big} is too large for a {what} "
-            f"(at most {max_bytes / 1e6:g} MB and {max_rows:,} rows)",
-        )
+    raw = read_file_within(
+        path, max_bytes, label=where, what=what, field=option, note=f" and {max_rows:,} rows"
+    )
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
