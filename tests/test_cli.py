@@ -360,3 +360,32 @@ def test_verbose_run_logs_its_steps_and_newton_iterations(tmp_path):
         text=True,
     )
     assert "Newton" not in quiet.stderr
+
+
+def test_a_signal_lost_in_a_finaliser_still_ends_the_command_as_interrupted(capsys):
+    """A SIGTERM whose handler runs inside a ``__del__`` (the garbage collector calls them
+    anywhere) raises where Python cannot propagate it; the command must not then exit 0 with an
+    "Exception ignored" traceback: it ends with its one line and 143."""
+    import os
+    import signal
+
+    from rotarykiln import cli
+
+    class Finalised:
+        def __del__(self):
+            os.kill(os.getpid(), signal.SIGTERM)  # the handler runs here, inside __del__
+
+    def func(args):
+        x = Finalised()
+        del x
+        return 0
+
+    parser = cli.build_parser
+    try:
+        cli.build_parser = lambda *a, **k: _FakeParser(func)
+        code = cli.main([])
+    finally:
+        cli.build_parser = parser
+    err = capsys.readouterr().err
+    assert code == 143 and "rotarykiln: terminated" in err, (code, err)
+    assert "Traceback" not in err and "Exception ignored" not in err, err

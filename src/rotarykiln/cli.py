@@ -18,6 +18,7 @@ from rotarykiln.commands._signals import (
     handled,
     install_early,
     interruption,
+    lost_interruption,
     signal_exit,
 )
 
@@ -125,6 +126,10 @@ def main(argv: list[str] | None = None) -> int:
     with handled(at_exit_ignore=argv is None) as received:
         try:
             code = _main(argv)
+            lost = lost_interruption(received)  # raised in a finaliser, where it was swallowed
+            if lost is not None:
+                code, text = signal_exit(lost)
+                print(f"rotarykiln: {text}", file=sys.stderr)
         except BaseException as exc:
             stop = interruption(received, exc)
             if stop is None:

@@ -22,6 +22,7 @@ __all__ = [
     "handled",
     "install_early",
     "interruption",
+    "lost_interruption",
     "signal_exit",
 ]
 
@@ -125,6 +126,11 @@ def handled(*, at_exit_ignore: bool):
     of the interpreter's shutdown, and never exit 0 for a run that was signalled before it
     ended). Otherwise the previous handlers are restored (an in-process caller, e.g. a test,
     gets its own handlers back).
+
+    A signal whose handler runs inside a finaliser (a ``__del__`` or a weakref callback, called
+    by the garbage collector anywhere) raises where Python cannot propagate it: the exception is
+    "ignored". It is not printed (no traceback); the signal stays in the yielded list, and the
+    caller ends the command as interrupted all the same (:func:`lost_interruption`).
     """
     if threading.current_thread() is not threading.main_thread():
         yield []
@@ -139,10 +145,27 @@ def handled(*, at_exit_ignore: bool):
         raised.append(signum)
         raise Terminated() if signum == signal.SIGTERM else KeyboardInterrupt()
 
+    previous_hook = sys.unraisablehook
+
+    def unraisable(info):
+        if raised and isinstance(info.exc_value, KeyboardInterrupt):
+            return  # our own interruption, lost in a finaliser: the caller reports it
+        previous_hook(info)
+
     try:
+        sys.unraisablehook = unraisable
         for s in sigs:
             signal.signal(s, on_signal)
         yield raised
     finally:
         for s in sigs:
             signal.signal(s, _late if at_exit_ignore else previous[s])
+        sys.unraisablehook = previous_hook
+
+
+def lost_interruption(received: list) -> KeyboardInterrupt | None:
+    """The interruption of a signal received but never raised where the command could see it
+    (lost in a finaliser, see :func:`handled`), else None."""
+    if not received:
+        return None
+    return Terminated() if received[0] == signal.SIGTERM else KeyboardInterrupt()
