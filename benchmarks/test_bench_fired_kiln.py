@@ -12,14 +12,14 @@ import pytest
 
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.steady.solve import solve_kiln
 
 
 @pytest.fixture(scope="module")
 def barr_t4():
     kiln, _ = kiln_from_case(load_case(builtin_case_path("barr_T4")))
-    assert kiln.flame is not None and kiln.flame.combustion == "instant"
+    assert kiln.firing.flame is not None and kiln.firing.flame.combustion == "instant"
     solve_kiln(kiln, 100)  # first-call costs (imports, caches) outside the timing
     return kiln
 

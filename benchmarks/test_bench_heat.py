@@ -3,7 +3,7 @@
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln import solve_kiln
-from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.tscheng import tscheng_kiln, validate_all
 
 

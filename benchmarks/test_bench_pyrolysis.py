@@ -11,7 +11,7 @@ import pytest
 
 from rotarykiln.errors import OutOfRangeWarning
 from rotarykiln.kiln.pyrolysis import char_yield, rotary_pyrolysis_kiln
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.steady.solve import solve_kiln
 
 
 @pytest.fixture(scope="module")

@@ -9,8 +9,8 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.steady.solve import solve_kiln
 from rotarykiln.studies import grid, run_sweep
 from rotarykiln.studies.models import kiln_model
 

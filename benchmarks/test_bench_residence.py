@@ -3,7 +3,7 @@
 The kiln (limestone calcination, 100 cells) is solved once outside the timing; the benchmarks
 time the batched integration of the RTD classes through its frozen profiles
 (:func:`~rotarykiln.chemistry.segregated.kiln_segregated_conversion`, 40 classes and the mean)
-and the whole :func:`~rotarykiln.kiln.residence.residence_time_effects` step of ``rotarykiln
+and the whole :func:`~rotarykiln.kiln.bed.residence.residence_time_effects` step of ``rotarykiln
 run`` (24 classes, the mean and the frozen plug class). Before the batching (one LSODA run per
 class) the run step took 12-13 s.
 
@@ -13,11 +13,11 @@ Run: ``pytest benchmarks/bench_residence.py --benchmark-enable --benchmark-only`
 import pytest
 import yaml
 
-import rotarykiln.kiln.residence as residence
+import rotarykiln.kiln.bed.residence as residence
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.steady.solve import solve_kiln
 
 
 @pytest.fixture(scope="module", params=["limestone_calcination", "charcoal_activation"])

@@ -25,7 +25,7 @@ import pytest
 
 from rotarykiln.case import parse_case, read_case_yaml
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.from_case import kiln_from_case
 
 
 @pytest.fixture(scope="module")
@@ -64,7 +64,7 @@ def test_bench_parse_build_per_case(benchmark, barr_cases):
     kiln = benchmark.pedantic(
         lambda: _parse_build(next(barr_cases)), rounds=200, iterations=1, warmup_rounds=2
     )
-    assert kiln.flame is not None
+    assert kiln.firing.flame is not None
 
 
 def test_bench_parse_build_cold_tables(benchmark, barr_cases):
@@ -76,7 +76,7 @@ def test_bench_parse_build_cold_tables(benchmark, barr_cases):
         return _parse_build(next(barr_cases))
 
     kiln = benchmark.pedantic(cold, rounds=20, iterations=1)
-    assert kiln.flame is not None
+    assert kiln.firing.flame is not None
 
 
 def test_bench_run_barr_T4_process(benchmark, tmp_path):

@@ -20,9 +20,9 @@ import pytest
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.examples import example_path
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.events import parse_transient, read_transient_file
-from rotarykiln.kiln.transient import TransientKiln, simulate
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.transient.events import parse_transient, read_transient_file
+from rotarykiln.kiln.transient.integrate import TransientKiln, simulate
 
 SPEC = {
     "wall": {

@@ -75,7 +75,7 @@ def test_random_operating_points_converge_or_fail_cleanly():
     # operating points around the fired and air-heated built-in kilns: speed, feed and firing
     # within a factor 0.6-1.6 of the nominal; each converges (closed balances) or raises
     # ConvergenceError, never anything else, never an unphysical solution
-    from rotarykiln.kiln.run import run_kiln_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
 
     rng = random.Random(7)
 
@@ -105,5 +105,5 @@ def test_random_operating_points_converge_or_fail_cleanly():
         assert abs(sol.energy_closure) < 1e-6
         ok += 1
     # all converge today (125 of 125 in a longer seeded run); one of these 12 stalled at 1.16x
-    # the tolerance before Newton accepted round-off stagnation (kiln/newton.py)
+    # the tolerance before Newton accepted round-off stagnation (kiln/steady/newton.py)
     assert ok == 12

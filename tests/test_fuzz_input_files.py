@@ -172,7 +172,7 @@ def mutations(kind: str, n: int, seed: int):
 def barr_kiln():
     from rotarykiln.case import load_case
     from rotarykiln.cases import builtin_case_path
-    from rotarykiln.kiln.build import kiln_from_case
+    from rotarykiln.kiln.from_case import kiln_from_case
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -182,7 +182,7 @@ def barr_kiln():
 def read_file(kind: str, path: Path, kiln=None):
     """Read (and check) the file ``path`` of ``kind`` as the program does; its result."""
     if kind == "events":
-        from rotarykiln.kiln.events import parse_transient, read_transient_file
+        from rotarykiln.kiln.transient.events import parse_transient, read_transient_file
 
         return parse_transient(read_transient_file(path), kiln, EVENTS_UNTIL)
     if kind == "species":

@@ -4,8 +4,8 @@ Each module's imports executed when it is imported are read from its source (``a
 imported): the ``import rotarykiln...`` and ``from rotarykiln... import ...`` statements of the
 module body, including those under a module-level ``if``/``try``/``with`` and in class bodies,
 but not inside functions (deferred imports) nor under ``if TYPE_CHECKING:``. An import names the
-module it loads: ``from rotarykiln.kiln import model`` the submodule ``rotarykiln.kiln.model``,
-``from rotarykiln.kiln.model import Kiln`` the module ``rotarykiln.kiln.model``. The parent
+module it loads: ``from rotarykiln.kiln.inputs import kiln as model`` the submodule ``rotarykiln.kiln.inputs.kiln``,
+``from rotarykiln.kiln.inputs import Kiln`` the module ``rotarykiln.kiln.inputs.kiln``. The parent
 packages Python initialises on the way are not counted as edges (every module would otherwise
 lead to ``rotarykiln/__init__.py``), but a module that imports names from its own package's
 ``__init__`` is.
@@ -184,7 +184,7 @@ def test_the_graph_sees_the_imports():
     assert len(graph) > 100
     # a module-level import, a submodule named in ``from pkg import sub``, a package __init__
     assert "rotarykiln.kiln.gas_mixture" in graph["rotarykiln.kiln.residual"]
-    assert "rotarykiln.kiln.model" in graph["rotarykiln.kiln"]
+    assert "rotarykiln.kiln.inputs.kiln" in graph["rotarykiln.kiln"]
     # an import inside a function is deferred, not an edge (rotarykiln.__getattr__ -> api)
     assert "rotarykiln.api" not in graph["rotarykiln"]
 

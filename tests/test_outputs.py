@@ -123,7 +123,7 @@ def test_columns_written_without_pandas_are_the_frames_file_byte_for_byte(tmp_pa
 
     from rotarykiln.case import load_case
     from rotarykiln.cases import builtin_case_path
-    from rotarykiln.kiln.run import run_kiln_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
     from rotarykiln.outputs import write_columns_atomic, write_frame_atomic
 
     with warnings.catch_warnings():

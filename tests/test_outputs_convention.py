@@ -29,8 +29,8 @@ RPM = 2 * np.pi / 60  # rad/s per rpm
 def _kiln(name: str):
     from rotarykiln.case import load_case
     from rotarykiln.cases import builtin_case_path
-    from rotarykiln.kiln.build import kiln_from_case
-    from rotarykiln.kiln.solve import solve_kiln
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.steady.solve import solve_kiln
 
     case = load_case(builtin_case_path(name))
     kiln, cells = kiln_from_case(case)
@@ -164,7 +164,7 @@ def _kiln_solution():
 
 
 def _residence():
-    from rotarykiln.kiln.residence import residence_time_effects
+    from rotarykiln.kiln.bed.residence import residence_time_effects
 
     case, kiln, sol = _kiln("limestone_calcination")
     return residence_time_effects(case, kiln, sol, n_tau=6)
@@ -302,7 +302,7 @@ def test_every_plot_returns_a_figure(name):
 
 
 def test_module_plot_helpers_and_plot_methods_return_figures():
-    from rotarykiln.kiln.profiles import plot_temperature_profiles
+    from rotarykiln.kiln.results.plots import plot_temperature_profiles
     from rotarykiln.regimes import plot_regime_map
     from rotarykiln.rtd.plots import parity_plot
     from rotarykiln.transverse.grid_plot import (

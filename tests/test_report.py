@@ -261,7 +261,7 @@ def test_the_gap_between_LHV_and_combustion_heat_is_explained(barr_t4):
     """The sentence says the NO and NO2 of the products take the heat: check it is so."""
     import cantera as ct
 
-    from rotarykiln.kiln.build import kiln_from_case
+    from rotarykiln.kiln.from_case import kiln_from_case
 
     _, report, summary = barr_t4
     gap = summary["kiln_energy_fuel_lhv_input_W"] - summary["kiln_energy_combustion_heat_W"]

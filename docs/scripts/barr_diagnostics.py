@@ -24,7 +24,7 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.run import run_kiln_case
+from rotarykiln.commands.kiln_runs import run_kiln_case
 
 TRIALS = ("T2", "T3", "T4", "T6", "T9")
 FEEDS_K = (298.15, 350.0, 400.0, 450.0, 500.0)

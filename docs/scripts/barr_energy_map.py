@@ -36,9 +36,9 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.build import kiln_from_case
+from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.residual import KilnResidual
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.steady.solve import solve_kiln
 
 TRIALS = ("T2", "T3", "T4", "T6", "T9")
 THIRDS = ("feed", "middle", "burner")
@@ -93,16 +93,16 @@ def energy_map(kiln, sol) -> dict:
         "shell": f["q_shell_loss"],
     }
     # every path of the network is in the sums: the gas loses gas>bed + gas>wall
-    solid = kiln.bed_material
+    solid = kiln.bed.material
     h_model = solid.enthalpy(sol.t_bed_nodes) * kiln.feed_flow
     m = sol.measurements
     zb = np.concatenate([[0.0], np.asarray(m["z_bed"])])
-    tb = np.concatenate([[kiln.feed_temperature], np.asarray(m["t_bed"])])
+    tb = np.concatenate([[kiln.feed.temperature], np.asarray(m["t_bed"])])
     out = {}
-    for i, sel in enumerate(_thirds(sol.z, kiln.length)):
+    for i, sel in enumerate(_thirds(sol.z, kiln.drum.length)):
         row = {k: float(np.sum(v[sel] * dz[sel])) for k, v in per_m.items()}
         row["gas drop"] = row["gas>bed"] + row["gas>wall"]
-        lo, hi = kiln.length * i / 3, kiln.length * (i + 1) / 3
+        lo, hi = kiln.drum.length * i / 3, kiln.drum.length * (i + 1) / 3
         j0, j1 = np.searchsorted(sol.z_nodes, [lo - 1e-9, hi - 1e-9])
         row["bed gain"] = float(h_model[min(j1, len(h_model) - 1)] - h_model[j0])
         t_lo, t_hi = np.interp([lo, hi], zb, tb)  # beyond the last reading: held
@@ -155,7 +155,7 @@ def report(trials, variant=None) -> None:
             cells = "".join(f"{row[k] / 1e3:10.2f}" for k in keys)
             print(f"  {third:8s}{cells}{row['bed gain measured'] / 1e3:10.2f}")
         print(f"  exhaust {em['exhaust'] / 1e3:.2f} kW, shell total {sol.shell_loss / 1e3:.2f} kW")
-        b = biases(sol, kiln.length)
+        b = biases(sol, kiln.drum.length)
         print(f"  {'bias K':14s}" + "".join(f"{t:>8s}" for t in (*THIRDS, "all")))
         for key, label in PROFILES:
             print(f"  {label:14s}" + "".join(f"{v:+8.0f}" for v in b[key]))

@@ -2,7 +2,7 @@
 
 Every variant changes the model the same way in every trial (T2, T3, T4, T6, T9): a YAML
 mapping merged into each built-in case (``case``) and/or closure choices of
-:class:`rotarykiln.kiln.model.Closures` not (yet) in the case file (``closures``). Per trial
+:class:`rotarykiln.kiln.inputs.closures.Closures` not (yet) in the case file (``closures``). Per trial
 the table gives the RMSE (K) of the bed, the gas 2.5 cm above the bed, the gas 10 cm off the
 wall and the inner wall, and the mean bed bias (model - measured, K); then the five-trial
 means and the issue's targets (bed <= 25, gas <= 30, wall <= 25 K; T2 and T9 mean bed bias
@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import argparse
 import copy
-import dataclasses
 import sys
 import time
 import warnings
@@ -41,8 +40,8 @@ from barr_energy_map import PROFILES, THIRDS, TRIALS, _merge, biases  # noqa: E4
 
 from rotarykiln.case import parse_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
-from rotarykiln.kiln.build import kiln_from_case  # noqa: E402
-from rotarykiln.kiln.solve import solve_kiln  # noqa: E402
+from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
+from rotarykiln.kiln.steady.solve import solve_kiln  # noqa: E402
 
 #: Share of the view of the thermocouple 10 cm off the wall taken by the bed (ASSUMED: it sees
 #: mostly the wall; the one 2.5 cm above the bed sees the bed over half its view).
@@ -84,9 +83,7 @@ def solve_variant(trial: str, case: dict, closures: dict, cells: int | None = No
         warnings.simplefilter("ignore")  # the Li film fit's extrapolation, reported elsewhere
         kiln, n = kiln_from_case(parse_case(raw))
         if closures:
-            kiln = dataclasses.replace(
-                kiln, closures=dataclasses.replace(kiln.closures, **closures)
-            )
+            kiln = kiln.replace(**{f"closures__{k}": v for k, v in closures.items()})
         return kiln, solve_kiln(kiln, cells or n)
 
 

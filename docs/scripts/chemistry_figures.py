@@ -17,11 +17,12 @@ from rotarykiln.chemistry.calcination import (  # noqa: E402
     baker_co2_equilibrium_pressure,
     garcia_labiano_co2_equilibrium_pressure,
 )
+from rotarykiln.cases import builtin_case  # noqa: E402
 from rotarykiln.chemistry.mechanism import Mechanism  # noqa: E402
 from rotarykiln.chemistry.plugflow import integrate_plug_flow  # noqa: E402
 from rotarykiln.chemistry.segregated import kiln_segregated_conversion  # noqa: E402
 from rotarykiln.studies import run_sweep  # noqa: E402
-from rotarykiln.studies.ahmad2006 import ahmad_chapter5_design, builtin_case  # noqa: E402
+from rotarykiln.studies.ahmad2006 import ahmad_chapter5_design  # noqa: E402
 from rotarykiln.studies.examples import ortiz_isothermal_burn_off  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "figures"

@@ -9,7 +9,7 @@ else escaping main), out-of-memory, time-outs; the slowest refusal.
 
 ``envelope``: random, physically sensible operating points around the built-in kiln cases
 (speed, feed, gas or fuel and air flows, gas and feed temperatures within sensible factors),
-solved as ``rotarykiln run`` solves them (:func:`rotarykiln.kiln.run.run_kiln_case`), each
+solved as ``rotarykiln run`` solves them (:func:`rotarykiln.commands.kiln_runs.run_kiln_case`), each
 solution checked: energy closure, element closure, finite temperatures; an inert hot-gas kiln
 (tscheng_A16) no hotter than its hottest inlet and no colder than its coldest source.
 
@@ -144,8 +144,8 @@ def _envelope_one(task):
     import numpy as np
 
     from rotarykiln.case import parse_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
     from rotarykiln.errors import ConvergenceError, InputError
-    from rotarykiln.kiln.run import run_kiln_case
 
     row = {"i": index, "case": name, "factors": factors}
     t0 = time.perf_counter()

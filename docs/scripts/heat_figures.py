@@ -5,7 +5,6 @@ Writes docs/figures/heat_*.png and prints the markdown table of the 44 Tscheng r
 """
 
 import warnings
-from dataclasses import replace
 from pathlib import Path
 
 import matplotlib
@@ -17,7 +16,7 @@ import numpy as np  # noqa: E402
 from rotarykiln.case import load_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
 from rotarykiln.kiln import solve_kiln  # noqa: E402
-from rotarykiln.kiln.build import kiln_from_case  # noqa: E402
+from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
 from rotarykiln.kiln.tscheng import (  # noqa: E402
     Z_GAS_BED,
     load_tscheng_runs,
@@ -67,7 +66,7 @@ def main():
     # 3. flame case, radiation on and off
     kiln, cells = kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
     on = solve_kiln(kiln, cells)
-    off = solve_kiln(replace(kiln, closures=replace(kiln.closures, radiation=False)), cells)
+    off = solve_kiln(kiln.replace(closures__radiation=False), cells)
     fig, ax = plt.subplots(figsize=(7, 4.2))
     for sol_, ls, lab in ((on, "-", "radiation on"), (off, "--", "radiation off")):
         ax.plot(sol_.z_nodes, sol_.t_gas_nodes, ls, color="tab:red", label=f"gas, {lab}")

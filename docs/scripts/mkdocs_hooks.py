@@ -30,7 +30,7 @@ def sphinx_to_html(html: str) -> str:
 
     Examples
     --------
-    >>> sphinx_to_html("see :func:<code>~rotarykiln.kiln.solve.solve_kiln</code>")
+    >>> sphinx_to_html("see :func:<code>~rotarykiln.kiln.steady.solve.solve_kiln</code>")
     'see <code>solve_kiln</code>'
     >>> sphinx_to_html(":math:<code>k_b</code>")
     '<span class="arithmatex">\\\\(k_b\\\\)</span>'

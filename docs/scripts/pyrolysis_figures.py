@@ -19,7 +19,7 @@ import pandas as pd  # noqa: E402
 
 from rotarykiln.errors import OutOfRangeWarning  # noqa: E402
 from rotarykiln.kiln.pyrolysis import rotary_pyrolysis_kiln  # noqa: E402
-from rotarykiln.kiln.solve import solve_kiln  # noqa: E402
+from rotarykiln.kiln.steady.solve import solve_kiln  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "figures"
 ANCHOR = pd.read_csv(

@@ -14,9 +14,9 @@ import yaml  # noqa: E402
 
 from rotarykiln.case import parse_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
-from rotarykiln.kiln.build import kiln_from_case  # noqa: E402
-from rotarykiln.kiln.residence import residence_time_effects  # noqa: E402
-from rotarykiln.kiln.solve import solve_kiln  # noqa: E402
+from rotarykiln.kiln.bed.residence import residence_time_effects  # noqa: E402
+from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
+from rotarykiln.kiln.steady.solve import solve_kiln  # noqa: E402
 from rotarykiln.outputs import write_frame_atomic  # noqa: E402
 from rotarykiln.studies.ahmad2006 import chapter5_directions, run_chapter5  # noqa: E402
 

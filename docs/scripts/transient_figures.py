@@ -16,9 +16,9 @@ import numpy as np  # noqa: E402
 
 from rotarykiln.case import load_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
-from rotarykiln.kiln.build import kiln_from_case  # noqa: E402
-from rotarykiln.kiln.events import parse_transient  # noqa: E402
-from rotarykiln.kiln.transient import simulate  # noqa: E402
+from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
+from rotarykiln.kiln.transient.events import parse_transient  # noqa: E402
+from rotarykiln.kiln.transient.integrate import simulate  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "figures"
 OUT.mkdir(exist_ok=True)
@@ -127,7 +127,7 @@ def limestone_feed_step():
             float(df["bed_outlet_temperature_K"].iloc[0]),
             float(df["bed_outlet_temperature_K"].iloc[-1]),
         ),
-        "wall C/U (h)": 0.15 * 2100 * 1000 / kiln.wall_loss_u / 3600,
+        "wall C/U (h)": 0.15 * 2100 * 1000 / kiln.wall.loss_u / 3600,
         "energy closure": float(sol.energy_conservation()[-1]),
         "element closure": max(sol.element_conservation().values()),
     }

@@ -145,7 +145,7 @@ class Result:
     case : Case
         The validated case that was run.
     runs : dict
-        Model name -> :class:`rotarykiln.kiln.coupling.ModelRun` (in the order they ran).
+        Model name -> :class:`rotarykiln.commands.model_runs.ModelRun` (in the order they ran).
     summary : dict
         The values ``rotarykiln run`` writes to ``summary.json`` (the names of its files
         aside): the case's geometry and regime, then each model's values (``transport_*``,
@@ -173,7 +173,7 @@ class Result:
 
     @property
     def solution(self):
-        """The :class:`~rotarykiln.kiln.solution.KilnSolution` (None without the kiln model)."""
+        """The :class:`~rotarykiln.kiln.results.solution.KilnSolution` (None without the kiln model)."""
         return self._value("kiln")
 
     @property
@@ -190,7 +190,7 @@ class Result:
 
     @property
     def residence(self):
-        """The :class:`~rotarykiln.kiln.residence.ResidenceTimeEffects` of a reacting kiln
+        """The :class:`~rotarykiln.kiln.bed.residence.ResidenceTimeEffects` of a reacting kiln
         (plug against segregated flow over the RTD; None otherwise)."""
         run = self.runs.get("kiln")
         return None if run is None else run.extra.get("residence")
@@ -198,7 +198,7 @@ class Result:
     @property
     def closure_warnings(self) -> tuple:
         """The kiln's closures used outside their validated range, one
-        :class:`~rotarykiln.kiln.closure_warnings.ClosureWarning` each (its text is in
+        :class:`~rotarykiln.kiln.results.closure_warnings.ClosureWarning` each (its text is in
         :attr:`warnings`; its ``field``, ``alternatives``, ``share`` of the heat to the solids,
         ``short`` line as attributes); empty without the kiln model or such a closure."""
         run = self.runs.get("kiln")

@@ -482,7 +482,7 @@ class Burner(Section):
 
 class Closures(Section):
     """Closure names of the kiln model (see docs/heat.md). ``preset``: ``default``
-    (:class:`rotarykiln.kiln.model.Closures`: Tscheng & Watkinson convection, Li 2005 covered
+    (:class:`rotarykiln.kiln.inputs.closures.Closures`: Tscheng & Watkinson convection, Li 2005 covered
     wall, radiation on, Johansson 2011 gas emissivity, the solid's given conductivity) or
     ``seed004`` (Gorog 1982 gas-bed and gas-wall, Tscheng & Watkinson covered wall: the
     closures of Ahmad's (2006) reacting kilns); a key given overrides the preset's choice.
@@ -709,7 +709,7 @@ class Gas(Section):
 
 
 class Jacket(Section):
-    """A heating jacket around the drum (indirectly heated kilns, kiln/jacket.py): a gas of
+    """A heating jacket around the drum (indirectly heated kilns, kiln/wall/jacket.py): a gas of
     mass ``flow`` entering at ``temperature``, flowing with the solids (``counter_current:
     false``, entering at the feed end) or against them; its ``specific_heat`` (constant) or
     ``composition`` (mole fractions, enthalpy from the gas tables). ``heat_transfer``: the

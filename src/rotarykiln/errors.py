@@ -84,7 +84,7 @@ class OutOfRangeWarning(UserWarning):
     than the text (all None when not known): ``quantity`` (the name checked, with its unit in
     brackets, ``"d_p [um]"``), ``outside`` (the smallest and largest value outside the range),
     ``low`` and ``high`` (the range), ``source`` (author and year), ``closure`` (the closure
-    that checked it, ``"covered_wall.li2005"``: see :mod:`rotarykiln.kiln.closure_warnings`)
+    that checked it, ``"covered_wall.li2005"``: see :mod:`rotarykiln.kiln.results.closure_warnings`)
     and ``mask`` (where the values checked were outside: a boolean array of their shape, None
     for a single value).
     """
@@ -213,7 +213,7 @@ def warn_out_of_range(
     field under ``closures:`` and its value), kept on the warning with the range and the values
     outside it (and where: pass the values of every cell, not their span), for a kiln run to say
     which heat flow the closure feeds
-    (:mod:`rotarykiln.kiln.closure_warnings`). Returns True when a warning was issued.
+    (:mod:`rotarykiln.kiln.results.closure_warnings`). Returns True when a warning was issued.
     """
     arr = np.asarray(value, dtype=float)
     if np.any((arr < low) | (arr > high)):

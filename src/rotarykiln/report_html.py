@@ -260,7 +260,7 @@ def measured_vs_computed(case, solution=None) -> dict[str, list[dict]]:
     """The computed temperature at every measured point of a case, and the residual.
 
     The solution is evaluated where the kiln model scores it
-    (:meth:`rotarykiln.kiln.solution.KilnSolution.measured_rmse`): bed and gas linear between
+    (:meth:`rotarykiln.kiln.results.solution.KilnSolution.measured_rmse`): bed and gas linear between
     faces, the wall at the measured interface, the gas readings also through the case's
     thermocouple when it has one.
 
@@ -284,7 +284,7 @@ def measured_vs_computed(case, solution=None) -> dict[str, list[dict]]:
     if m is None:
         return {}
     if solution is None:
-        from rotarykiln.kiln.run import run_kiln_case
+        from rotarykiln.commands.kiln_runs import run_kiln_case
 
         with _warnings.catch_warnings():  # the run has shown them; not twice
             _warnings.simplefilter("ignore")
@@ -518,7 +518,7 @@ def _term(label, value, total, keys=(), note="", row=None) -> dict:
 
 
 def _combustion_gap(sheet: Mapping[str, Any], kiln: Mapping[str, Any]) -> str:
-    """Why the heat of combustion is not the fuel's LHV input (kiln.flame, materials.gas)."""
+    """Why the heat of combustion is not the fuel's LHV input (kiln.firing.flame, materials.gas)."""
     lhv, heat = sheet["lhv"], sheet["combustion"]
     if not lhv or not heat:
         return ""
@@ -747,7 +747,7 @@ _CONVERGENCE = (
 def _newton_tolerance() -> float:
     import inspect
 
-    from rotarykiln.kiln.solve import solve_kiln
+    from rotarykiln.kiln.steady.solve import solve_kiln
 
     return float(inspect.signature(solve_kiln).parameters["tol"].default)
 

@@ -24,8 +24,8 @@ def _raw() -> dict:
 
 def _solver_outlet(raw: dict) -> float:
     """The bed outlet temperature (K) of the kiln model, straight from the solver."""
-    from rotarykiln.kiln.build import kiln_from_case
-    from rotarykiln.kiln.solve import solve_kiln
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.steady.solve import solve_kiln
 
     kiln, cells = kiln_from_case(parse_case(raw))
     return solve_kiln(kiln, cells).bed_outlet_temperature
@@ -246,7 +246,7 @@ def _page_text(driver) -> str:
 def test_each_case_type_shows_its_results_and_the_page_holds_at_420_px(
     browser, app_server, screenshot
 ):
-    from rotarykiln.kiln.coupling import bed_profile_from_case
+    from rotarykiln.commands.model_runs import bed_profile_from_case
     from rotarykiln.rtd.predict import predict_from_case
 
     _open(browser, app_server)

@@ -257,7 +257,7 @@ def test_an_rtd_case_shows_its_distribution_with_its_moments(store):
 
 
 def test_a_transport_case_shows_its_bed_profile_and_no_server_path(store):
-    from rotarykiln.kiln.coupling import bed_profile_from_case
+    from rotarykiln.commands.model_runs import bed_profile_from_case
 
     name = "charcoal_activation_kramers"
     result = store.run(load_builtin(name), name)

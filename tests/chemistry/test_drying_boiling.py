@@ -23,8 +23,8 @@ from rotarykiln.chemistry.drying import (
 )
 from rotarykiln.chemistry.mechanism import CellState, Mechanism
 from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
+from rotarykiln.commands.kiln_runs import run_kiln_case
 from rotarykiln.errors import InputError, OutOfRangeWarning
-from rotarykiln.kiln.run import run_kiln_case
 
 T_BOIL = 373.15
 DRYING = {

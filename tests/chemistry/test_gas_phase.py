@@ -10,8 +10,8 @@ from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.gas_phase import R_GAS, gas_arrhenius_rate, shift_equilibrium_constant
 from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
+from rotarykiln.commands.kiln_runs import run_kiln_case
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.run import run_kiln_case
 
 P = 101325.0
 

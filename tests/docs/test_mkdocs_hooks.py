@@ -17,7 +17,7 @@ def test_roles_and_math_are_rewritten():
     h = _hooks()
     html = (
         "<p>with :math:<code>N = 1 - B</code>, see :class:<code>rotarykiln.kiln.Kiln</code> and "
-        ":meth:<code>~rotarykiln.kiln.model.Kiln.inert</code></p>\n<p>.. math::\n    a = b,\n"
+        ":meth:<code>~rotarykiln.kiln.inputs.kiln.Kiln.inert</code></p>\n<p>.. math::\n    a = b,\n"
         "    c = d</p>"
     )
     out = h.sphinx_to_html(html)

@@ -8,9 +8,9 @@ import pytest
 
 from rotarykiln.errors import InputError
 from rotarykiln.heat.bed_conductivity import radiative_bed_conductivity
-from rotarykiln.kiln.discretisation import cell_grid
 from rotarykiln.kiln.exchange import BulkBed, CrossSectionExchange, TableGas
-from rotarykiln.kiln.model import Closures
+from rotarykiln.kiln.grid import cell_grid
+from rotarykiln.kiln.inputs import Closures
 from rotarykiln.materials.gas import air_table
 
 

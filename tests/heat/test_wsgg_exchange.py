@@ -20,7 +20,7 @@ from rotarykiln.heat.radiation import (
     freeboard_radiation_bands,
     freeboard_radiation_paths,
 )
-from rotarykiln.kiln.model import Closures
+from rotarykiln.kiln.inputs import Closures
 
 ATM = 101325.0
 # natural-gas products at about 2.5 times the stoichiometric air, the UBC pilot kiln's freeboard

@@ -13,11 +13,11 @@ from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.calcination import R_GAS  # noqa: F401  (module imports cleanly)
 from rotarykiln.chemistry.plugflow import integrate_plug_flow
+from rotarykiln.commands.kiln_runs import kiln_runner, run_kiln_case
 from rotarykiln.errors import ConvergenceError, InputError
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.residence import KilnRTD, residence_time_effects
-from rotarykiln.kiln.run import kiln_runner, run_kiln_case
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.bed.residence import KilnRTD, residence_time_effects
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.steady.solve import solve_kiln
 from rotarykiln.studies.models import kiln_model
 
 matplotlib.use("Agg")
@@ -77,14 +77,14 @@ def test_charcoal_burn_off_matches_plug_flow_through_its_own_profile(charcoal):
     sol = charcoal
     chord = sol.fluxes["q_gas_bed_conv"] / sol.fluxes["h_gb"] / (sol.t_gas - sol.t_bed)
     pf = integrate_plug_flow(
-        kiln.mechanism,
-        kiln.feed,
-        kiln.length,
-        kiln.bed_velocity,
+        kiln.chemistry.mechanism,
+        kiln.feed.flows,
+        kiln.drum.length,
+        kiln.bed.velocity,
         (sol.z, sol.t_bed),
         (sol.z, sol.t_gas),
         inputs={
-            "steam_mass_flow": kiln.steam_flow,
+            "steam_mass_flow": kiln.chemistry.steam_flow,
             "drying_conductance": (sol.z, sol.fluxes["h_gb"] * chord),
         },
     )
@@ -109,11 +109,11 @@ def test_equilibrium_rate_is_zero_where_co2_exceeds_equilibrium():
     case = parse_case(data)
     kiln, _ = kiln_from_case(case)
     g = sol.gas_flows
-    mm = {s: kiln.mechanism.species[s].molar_mass for s in g}
+    mm = {s: kiln.chemistry.mechanism.species[s].molar_mass for s in g}
     # the rate of cell j sees the gas leaving the cell (face j)
     moles = {s: g[s][:-1] / mm[s] for s in g}
     x_co2 = moles["CO2"] / sum(moles.values())
-    p_co2_atm = x_co2 * kiln.pressure / 101325.0
+    p_co2_atm = x_co2 * kiln.gas.pressure / 101325.0
     p_eq_atm = 10 ** (7.079 - 8308.0 / sol.t_bed)  # Baker (1962)
     r = sol.reaction_rates["calcination_equilibrium"]
     assert np.all(r[p_co2_atm >= p_eq_atm] == 0.0)
@@ -199,7 +199,7 @@ def test_residence_time_effects_peclet_sources(charcoal):
     default = residence_time_effects(case, kiln, charcoal, n_tau=12)
     # Sherritt: D = 0.0011 (N/Nc)^0.39 D^1.15 dp^0.46 X^-0.43, Pe = u L / D
     assert default.peclet == pytest.approx(
-        kiln.bed_velocity * kiln.length / default.dispersion, rel=1e-12
+        kiln.bed.velocity * kiln.drum.length / default.dispersion, rel=1e-12
     )
     data["chemistry"]["peclet"] = 5.0
     low = residence_time_effects(parse_case(data), kiln, charcoal, n_tau=12)

@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from rotarykiln.case import parse_case
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.coupling import bed_fill_profile
-from rotarykiln.kiln.run import run_kiln_case
+from rotarykiln.commands.kiln_runs import run_kiln_case
+from rotarykiln.commands.model_runs import bed_fill_profile
+from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.transport.kramers import kramers_uniform_depth
 
 CASE = {
@@ -60,7 +60,7 @@ def test_coupled_solve_closes_energy(model):
 
 
 def test_rtd_prediction_uses_the_transport_mean_residence_time(tmp_path):
-    from rotarykiln.kiln.coupling import rtd_runner, transport_mean_residence_time
+    from rotarykiln.commands.model_runs import rtd_runner, transport_mean_residence_time
 
     data = {
         "name": "rtd from transport",
@@ -79,7 +79,7 @@ def test_rtd_prediction_uses_the_transport_mean_residence_time(tmp_path):
     summary = rtd_runner(case, tmp_path)
     assert summary["rtd_mean_residence_time_s"] == pytest.approx(mrt, rel=1e-9)
     # mean residence time = hold-up / volumetric feed, by another route
-    from rotarykiln.kiln.coupling import bed_profile_from_case
+    from rotarykiln.commands.model_runs import bed_profile_from_case
 
     holdup = bed_profile_from_case(case).holdup_volume
     assert holdup == pytest.approx(mrt * case.operation.feed / case.material.bulk_density, rel=1e-6)

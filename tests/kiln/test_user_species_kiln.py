@@ -5,8 +5,8 @@ import pytest
 
 from rotarykiln.chemistry.biomass import mechanism_from_files
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.model import Closures, Kiln
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.inputs import Bed, Chemistry, Closures, Drum, Feed, GasInlet, Kiln
+from rotarykiln.kiln.steady.solve import solve_kiln
 
 pytestmark = pytest.mark.filterwarnings("ignore::rotarykiln.errors.OutOfRangeWarning")
 
@@ -40,23 +40,19 @@ reactions:
 
 def _kiln(mech):
     return Kiln(
-        length=4.0,
-        radius=0.25,
-        omega=0.2,
-        fill=0.08,
-        bed_velocity=4.0 / 1800.0,
-        feed={"polymer": 0.01},
-        feed_temperature=298.15,
-        bed_cp={},
-        bulk_density=500.0,
-        bed_conductivity=0.2,
-        bed_emissivity=0.9,
-        particle_diameter=0.005,
-        gas_in={"N2": 0.05},
-        gas_inlet_temperature=1000.0,
-        mechanism=mech,
+        drum=Drum(length=4.0, radius=0.25, omega=0.2),
+        bed=Bed(
+            fill=0.08,
+            velocity=4.0 / 1800.0,
+            bulk_density=500.0,
+            conductivity=0.2,
+            emissivity=0.9,
+            particle_diameter=0.005,
+        ),
+        feed=Feed({"polymer": 0.01}, 298.15),
+        gas=GasInlet({"N2": 0.05}, 1000.0, counter_current=True),
+        chemistry=Chemistry(mech),
         closures=Closures(),
-        counter_current=True,
     )
 
 
@@ -127,11 +123,11 @@ def _case_files(tmp_path):
 
 def test_case_file_with_its_own_species_runs(tmp_path):
     from rotarykiln.case import load_case
-    from rotarykiln.kiln.build import kiln_from_case
+    from rotarykiln.kiln.from_case import kiln_from_case
 
     case = load_case(_case_files(tmp_path))
     kiln, cells = kiln_from_case(case)
-    assert "C2H4_user" in kiln.mechanism.species and cells == 30
+    assert "C2H4_user" in kiln.chemistry.mechanism.species and cells == 30
     sol = solve_kiln(kiln, cells)
     assert abs(sol.energy_closure) < 1e-6
     assert max(sol.element_closure.values()) < 1e-8

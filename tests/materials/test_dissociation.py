@@ -12,8 +12,8 @@ import yaml
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.build import kiln_from_case
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.steady.solve import solve_kiln
 from rotarykiln.materials.dissociation import (
     DISSOCIATION_SPECIES,
     dissociation_enthalpy,
@@ -94,7 +94,7 @@ def _hot_kiln(products):
 def test_fired_kiln_enters_at_the_equilibrium_adiabatic_temperature():
     data, kiln = _hot_kiln("equilibrium")
     _, frozen = _hot_kiln("complete")
-    flame, flame_fr = kiln.flame, frozen.flame
+    flame, flame_fr = kiln.firing.flame, frozen.flame
     # independent: Cantera HP equilibrium (no nitrogen oxides) of the unburnt fuel and air
     gas = _restricted()
     fuel = ct.Solution("gri30.yaml")

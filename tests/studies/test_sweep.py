@@ -4,9 +4,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from rotarykiln.cases import builtin_case
 from rotarykiln.errors import InputError
 from rotarykiln.studies import grid, one_at_a_time, run_sweep, set_path, with_values
-from rotarykiln.studies.ahmad2006 import CHAPTER5_DIRECTIONS, ahmad_chapter5_design, builtin_case
+from rotarykiln.studies.ahmad2006 import CHAPTER5_DIRECTIONS, ahmad_chapter5_design
 from rotarykiln.studies.examples import (
     failing_model,
     first_order_conversion,

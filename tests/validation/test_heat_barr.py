@@ -22,7 +22,7 @@ import yaml
 
 from rotarykiln.case import load_case, parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.run import run_kiln_case
+from rotarykiln.commands.kiln_runs import run_kiln_case
 
 TRIALS = ("T3", "T4", "T6")
 
@@ -83,10 +83,10 @@ def test_firing_rate_matches_the_reference_note():
     # flames.md section 6 (Cantera, 0 degC basis): Q = 50.8, 70.5, 32.2 kW LHV
     for t, q in zip(TRIALS, (50.8e3, 70.5e3, 32.2e3), strict=True):
         case = load_case(builtin_case_path(f"barr_{t}"))
-        from rotarykiln.kiln.build import kiln_from_case
+        from rotarykiln.kiln.from_case import kiln_from_case
 
         kiln, _ = kiln_from_case(case)
-        assert kiln.flame.fuel_lhv == pytest.approx(q, rel=2e-3)
+        assert kiln.firing.flame.fuel_lhv == pytest.approx(q, rel=2e-3)
 
 
 def test_mesh_doubling_changes_profiles_by_less_than_2_K():
@@ -101,7 +101,7 @@ def test_mesh_doubling_changes_profiles_by_less_than_2_K():
 
 
 def test_co_current_variant_converges():
-    # every built-in fired heat case (the fired limestone kiln: tests/kiln/test_fired_reacting.py)
+    # every built-in fired heat case (the fired limestone kiln: tests/kiln/combustion/test_fired_reacting.py)
     for name in [f"barr_{t}" for t in TRIALS] + ["ubc_pilot_flame"]:
         data = yaml.safe_load(builtin_case_path(name).read_text())
         data["operation"]["counter_current"] = False
@@ -165,16 +165,13 @@ def test_banded_exchange_closes_and_passes_less_heat_at_the_highest_firing():
     # the WSGG grey gases in the network (closures.radiation_model: banded): the gas absorbs
     # the cooler surfaces' radiation with its absorptivity at their temperature, so at T9's
     # hot, low-excess-air flame it hands less heat to the bed and wall than one grey gas
-    import dataclasses
 
-    from rotarykiln.kiln.build import kiln_from_case
-    from rotarykiln.kiln.solve import solve_kiln
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.steady.solve import solve_kiln
 
     kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T9")))
     grey = solve_kiln(kiln, cells)
-    banded_kiln = dataclasses.replace(
-        kiln, closures=dataclasses.replace(kiln.closures, radiation_model="banded")
-    )
+    banded_kiln = kiln.replace(closures__radiation_model="banded")
     banded = solve_kiln(banded_kiln, cells)
     assert abs(banded.energy_closure) < 1e-6
     assert abs(banded.energy_sheet["closure_relative"]) < 1e-6

@@ -12,7 +12,7 @@ import yaml
 
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.run import run_kiln_case
+from rotarykiln.commands.kiln_runs import run_kiln_case
 
 
 def _data(name):

@@ -22,14 +22,14 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from rotarykiln.kiln.jacket import jacket_balance
 from rotarykiln.kiln.pyrolysis import (
     char_yield,
     mean_residence_time,
     rotary_pyrolysis_kiln,
     segregated_yields,
 )
-from rotarykiln.kiln.solve import solve_kiln
+from rotarykiln.kiln.steady.solve import solve_kiln
+from rotarykiln.kiln.wall.jacket import jacket_balance
 
 pytestmark = pytest.mark.filterwarnings("ignore::rotarykiln.errors.OutOfRangeWarning")
 
@@ -124,10 +124,10 @@ def test_builtin_case_file():
     and the Saeman fill profile: the same targets in plug flow, the jacket balance closed."""
     from rotarykiln.case import load_case
     from rotarykiln.cases import builtin_case_path
-    from rotarykiln.kiln.build import kiln_from_case
+    from rotarykiln.kiln.from_case import kiln_from_case
 
     kiln, cells = kiln_from_case(load_case(builtin_case_path("rotary_pyrolysis")))
-    assert kiln.jacket is not None and kiln.jacket.htc == "wall_at_gas"
+    assert kiln.wall.jacket is not None and kiln.wall.jacket.htc == "wall_at_gas"
     sol = solve_kiln(kiln, cells)
     assert abs(sol.energy_closure) < 1e-6
     assert abs(jacket_balance(kiln, sol)["closure_relative"]) < 1e-6

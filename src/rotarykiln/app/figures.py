@@ -14,7 +14,7 @@ import plotly.graph_objects as go
 from matplotlib.colors import to_hex
 
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.profiles import COLOURS as PROFILE_COLOURS
+from rotarykiln.kiln.results.plots import COLOURS as PROFILE_COLOURS
 from rotarykiln.units import to_si
 
 __all__ = [

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from rotarykiln.errors import InputError
 
-__all__ = ["builtin_case_path", "list_builtin_cases"]
+__all__ = ["builtin_case", "builtin_case_path", "list_builtin_cases"]
 
 
 def list_builtin_cases() -> list[str]:
@@ -24,3 +24,17 @@ def builtin_case_path(name: str) -> Path:
     if name not in names or not path.is_file():  # a name, never a path out of this folder
         raise InputError("case", name, f"a built-in case ({', '.join(names)})")
     return path
+
+
+def builtin_case(name: str) -> dict:
+    """A built-in case file by name, as the plain nested dict of its YAML (not validated).
+
+    Examples
+    --------
+    >>> builtin_case("charcoal_activation")["kiln"]["length"]
+    '3.7 m'
+    """
+    import yaml
+
+    with open(builtin_case_path(name), encoding="utf-8") as fh:
+        return yaml.safe_load(fh)

@@ -141,8 +141,8 @@ def run(args: argparse.Namespace) -> int:
 
 def run_case_section(case, out) -> dict:
     """Runner for the ``transport:`` section of a case file (see rotarykiln.commands.run): the
-    summary of :func:`rotarykiln.kiln.coupling.transport_run` and the files it writes."""
-    from rotarykiln.kiln.coupling import transport_run
+    summary of :func:`rotarykiln.commands.model_runs.transport_run` and the files it writes."""
+    from rotarykiln.commands.model_runs import transport_run
 
     run = transport_run(case)
     return {**run.summary, **run.write(out)}

@@ -1,7 +1,7 @@
 """``rotarykiln run CASE.yaml``: validate a case, run the models its sections ask for, write results.
 
 Models are looked up in :data:`RUNNERS` (model name -> "module:function"); each function takes
-the validated case and returns a :class:`rotarykiln.kiln.coupling.ModelRun` (its result, its
+the validated case and returns a :class:`rotarykiln.commands.model_runs.ModelRun` (its result, its
 summary values, and how to write its files). :func:`solve_case` runs them in memory: it is the
 one code path of this command and of :func:`rotarykiln.run`.
 """
@@ -41,9 +41,9 @@ __all__ = [
 
 
 RUNNERS: dict[str, str] = {
-    "transport": "rotarykiln.kiln.coupling:transport_run",
-    "kiln": "rotarykiln.kiln.run:kiln_run",
-    "rtd": "rotarykiln.kiln.coupling:rtd_run",
+    "transport": "rotarykiln.commands.model_runs:transport_run",
+    "kiln": "rotarykiln.commands.kiln_runs:kiln_run",
+    "rtd": "rotarykiln.commands.model_runs:rtd_run",
 }
 """Model name -> "module:function(case) -> ModelRun", run when the case asks for it
 (:func:`wants`: a ``transport:`` or ``rtd:`` section; the kiln model for a case with a heat
@@ -63,7 +63,7 @@ def solve_case(case) -> dict:
     Returns
     -------
     dict
-        Model name -> :class:`rotarykiln.kiln.coupling.ModelRun`, in the order of
+        Model name -> :class:`rotarykiln.commands.model_runs.ModelRun`, in the order of
         :data:`RUNNERS` (the transport bed profile first: it feeds the kiln's fill and the
         RTD's mean residence time).
     """

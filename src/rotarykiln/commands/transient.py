@@ -1,7 +1,7 @@
 """``rotarykiln transient CASE.yaml --events EVENTS.yaml --until "10 h" --out DIR``.
 
-Runs the transient kiln (:mod:`rotarykiln.kiln.transient`) of a case file under the events of a
-transient file (:mod:`rotarykiln.kiln.events`) and writes ``transient_profiles.parquet`` (every
+Runs the transient kiln (:mod:`rotarykiln.kiln.transient.integrate`) of a case file under the events of a
+transient file (:mod:`rotarykiln.kiln.transient.events`) and writes ``transient_profiles.parquet`` (every
 variable against z and t), ``transient_outlets.csv``, ``transient_summary.json``, the z-t heat
 map and the outlets against time; with a tracer pulse, its RTD in the summary.
 """
@@ -42,14 +42,14 @@ def register(sub) -> None:
 def run(args) -> int:
     from rotarykiln.case import Cells, Time, check_quantity, load_case
     from rotarykiln.commands.run import case_path
-    from rotarykiln.kiln.build import kiln_from_case
-    from rotarykiln.kiln.events import (
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.transient.events import (
         check_output_size,
         output_times_bound,
         parse_transient,
         read_transient_file,
     )
-    from rotarykiln.kiln.transient import simulate
+    from rotarykiln.kiln.transient.integrate import simulate
 
     # the ranges of the case file: a run of at most 1e10 s, at most 20,000 cells
     until = check_quantity("--until", args.until, Time)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotarykiln.kiln.flame import AIR
+from rotarykiln.kiln.combustion.flame import AIR
 from rotarykiln.materials.gas import parse_composition
 
 __all__ = ["energy_sheet", "exhaust_state"]
@@ -42,7 +42,7 @@ def exhaust_state(res, flows, temperature: float) -> tuple[dict, float]:
     """
     flows = np.maximum(np.asarray(flows, dtype=float), 0.0)
     names = list(res.gas_names)
-    flame = res.kiln.flame
+    flame = res.kiln.firing.flame
     air = flame.burner.exhaust_ingress if flame is not None else None
     q_air = np.zeros(len(names))
     h_in = 0.0
@@ -106,7 +106,7 @@ def energy_sheet(
     ``thermal_efficiency`` = heat to the solids (sensible + reaction) / fuel LHV input, or
     over the heat the gas gives up for a kiln without a burner.
     """
-    flame = kiln.flame
+    flame = kiln.firing.flame
     if flame is not None:
         lhv, hhv = float(flame.fuel_lhv), float(flame.fuel_hhv)
         if flame.burns_at_inlet:

@@ -11,7 +11,7 @@ composition, :class:`TableGas`):
     Q_{gw} = h_{gw} A_w (T_g - T_w),\quad Q_{gb} = h_{gb} L_c (T_g - T_b),\quad
     Q_{cw} = h_{cw} A_c (T_w - T_b),\quad (Q_{rw}, Q_{rb}) = \text{grey network}(\varepsilon_g)
 
-with the closures chosen by name in :class:`~rotarykiln.kiln.model.Closures`: gas-wall and
+with the closures chosen by name in :class:`~rotarykiln.kiln.inputs.closures.Closures`: gas-wall and
 gas-bed convection (``tscheng1979``, ``gorog1982``), covered wall (``li2005``,
 ``tscheng1979``, ``wachters_kramers1964``), bed conductivity (``given``, ``maxwell``,
 ``zehner_schlunder``), gas emissivity (``johansson2011``, ``smith1982``, a constant, or seed
@@ -56,7 +56,7 @@ from rotarykiln.heat.radiation import (
     freeboard_radiation_bands,
     freeboard_radiation_paths,
 )
-from rotarykiln.kiln.model import Closures
+from rotarykiln.kiln.inputs import Closures
 from rotarykiln.materials.gas import GasPropertyTable
 
 __all__ = [
@@ -176,8 +176,8 @@ class CrossSectionExchange:
     """Heat flows per metre between gas, exposed wall, bed and covered wall of every cell.
 
     The constant parts, built once per solve (:meth:`of` a kiln). ``closures``
-    (:class:`~rotarykiln.kiln.model.Closures`); ``geometry``: the cell geometry
-    (:class:`~rotarykiln.kiln.discretisation.Grid`: ``fill``, ``full_angle``, ``chord``,
+    (:class:`~rotarykiln.kiln.inputs.closures.Closures`); ``geometry``: the cell geometry
+    (:class:`~rotarykiln.kiln.grid.Grid`: ``fill``, ``full_angle``, ``chord``,
     ``exposed_wall``, ``covered_wall``, ``hydraulic_diameter``, ``beam_length``; arrays over
     cells); ``length``, ``radius`` (m), ``omega`` (rad/s); ``eps_wall`` (-); ``bed``: a
     :class:`~rotarykiln.materials.solids.Solid` or a :class:`BulkBed` (``emissivity``,
@@ -190,7 +190,7 @@ class CrossSectionExchange:
 
     Examples
     --------
-    >>> from rotarykiln.kiln.discretisation import cell_grid
+    >>> from rotarykiln.kiln.grid import cell_grid
     >>> from rotarykiln.materials.gas import air_table
     >>> g = cell_grid(2.0, 0.1, 4, lambda z: np.full_like(z, 0.15))
     >>> c = Closures(gas_bed="gorog1982", radiation=False)
@@ -219,7 +219,7 @@ class CrossSectionExchange:
         """For a kiln model with ``closures``, ``length``, ``radius``, ``omega``, ``eps_wall``
         and ``soot`` (f_v, z_start, z_end) or None: each cell's soot volume fraction is f_v
         times the share of the cell inside the luminous zone."""
-        soot = getattr(kiln, "soot", None)
+        soot = kiln.firing.soot
         fv = None
         if soot is not None and soot[0] > 0:
             f_v, z0, z1 = soot
@@ -229,10 +229,10 @@ class CrossSectionExchange:
         return cls(
             kiln.closures,
             grid,
-            kiln.length,
-            kiln.radius,
-            kiln.omega,
-            kiln.eps_wall,
+            kiln.drum.length,
+            kiln.drum.radius,
+            kiln.drum.omega,
+            kiln.wall.inner_emissivity,
             bed,
             emissivity_law,
             fv,

@@ -25,15 +25,14 @@ rad/s; Li et al. 2005 with its own film thickness; gas properties from the table
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 
 from rotarykiln.chemistry.biomass import tar_escape_fraction, wood_pyrolysis_mechanism
-from rotarykiln.kiln.bed_depth import KramersBed
-from rotarykiln.kiln.jacket import Jacket, JacketedKiln
-from rotarykiln.kiln.model import Closures
+from rotarykiln.kiln.bed.depth import KramersBed
+from rotarykiln.kiln.inputs import Bed, Chemistry, Closures, Drum, Feed, GasInlet, Kiln, Wall
+from rotarykiln.kiln.wall.jacket import Jacket
 
 __all__ = [
     "PYROLYSIS_CLOSURES",
@@ -128,8 +127,8 @@ def rotary_pyrolysis_kiln(
     freeboard_cracking: bool = False,
     closures: Closures | None = None,
     **overrides,
-) -> JacketedKiln:
-    """The rotaryPyrolysis default case as a :class:`~rotarykiln.kiln.jacket.JacketedKiln`.
+) -> Kiln:
+    """The rotaryPyrolysis default case as a :class:`~rotarykiln.kiln.inputs.kiln.Kiln` heated by a jacket.
 
     Parameters
     ----------
@@ -140,7 +139,7 @@ def rotary_pyrolysis_kiln(
         Bed Peclet number (default 5).
     jacket_htc : float or str
         Jacket gas to drum coefficient: ``"wall_at_gas"`` (the script: the wall at the flue-gas
-        temperature), ``"annulus"`` (:func:`~rotarykiln.kiln.jacket.annulus_heat_transfer_coefficient`
+        temperature), ``"annulus"`` (:func:`~rotarykiln.kiln.wall.jacket.annulus_heat_transfer_coefficient`
         with a 50 mm gap, an assumption: the script has no jacket geometry) or W/(m2 K).
     shrinkage : float
         Fraction of the bed volume lost at full conversion (:class:`ConstantVolumeBed`); 0
@@ -156,7 +155,7 @@ def rotary_pyrolysis_kiln(
     Examples
     --------
     >>> k = rotary_pyrolysis_kiln(dispersion=False)
-    >>> round(k.feed["wood"] * 3600, 2), k.counter_current, k.jacket.inlet_temperature
+    >>> round(k.feed.flows["wood"] * 3600, 2), k.gas.counter_current, k.wall.jacket.inlet_temperature
     (29.97, False, 833.15)
     """
     p = {**ROTARY_PYROLYSIS, **overrides}
@@ -205,34 +204,36 @@ def rotary_pyrolysis_kiln(
     volume = float(np.trapezoid(area, z))
     tau = volume / q0
     fill = float(np.mean(area)) / (np.pi * R**2)
-    kiln = JacketedKiln(
-        length=L,
-        radius=R,
-        omega=omega,
-        fill=fill,
-        bed_velocity=L / tau,
-        feed={"wood": feed * (1.0 - X), "H2O(l)": feed * X},
-        feed_temperature=p["feed_temperature"],
-        bed_cp={},
-        bulk_density=rho_b,
-        bed_conductivity=p["bed_conductivity"],
-        bed_emissivity=p["bed_emissivity"],
-        particle_diameter=p["particle_diameter"],
-        gas_in={"N2": p["n2_flow"]},
-        gas_inlet_temperature=p["gas_temperature"],
-        mechanism=mech,
-        ambient_temperature=p["ambient_temperature"],
-        wall_emissivity=p["wall_emissivity"],
-        pressure=p["pressure"],
+    kiln = Kiln(
+        drum=Drum(L, R, omega),
+        bed=Bed(
+            fill=fill,
+            velocity=L / tau,
+            bulk_density=rho_b,
+            conductivity=p["bed_conductivity"],
+            emissivity=p["bed_emissivity"],
+            particle_diameter=p["particle_diameter"],
+            depth=bed,
+        ),
+        feed=Feed({"wood": feed * (1.0 - X), "H2O(l)": feed * X}, p["feed_temperature"]),
+        gas=GasInlet(
+            {"N2": p["n2_flow"]},
+            p["gas_temperature"],
+            pressure=p["pressure"],
+            counter_current=False,
+        ),
+        chemistry=Chemistry(mech),
+        wall=Wall(
+            jacket=jacket,
+            ambient_temperature=p["ambient_temperature"],
+            emissivity=p["wall_emissivity"],
+        ),
         closures=closures or PYROLYSIS_CLOSURES,
         name="rotaryPyrolysis default case (Pichler et al. 2021)",
-        counter_current=False,
-        bed_depth=bed,
-        jacket=jacket,
     )
     if dispersion:
         pe = p["peclet"] if peclet is None else peclet
-        kiln = dataclasses.replace(kiln, bed_dispersion=L * L / tau / pe)
+        kiln = kiln.replace(bed__dispersion=L * L / tau / pe)
     return kiln
 
 
@@ -255,7 +256,7 @@ def _saeman_depth(bed: KramersBed, length, z, q):
 def mean_residence_time(kiln, solution) -> float:
     r"""Mean solids residence time (s) of a solved pyrolysis kiln:
     :math:`\tau = \int A_{bed}\,dz / \dot V` with the bed's volume flow law (the
-    :class:`~rotarykiln.kiln.model.Kiln` solution's own figure assumes a constant bulk
+    :class:`~rotarykiln.kiln.inputs.kiln.Kiln` solution's own figure assumes a constant bulk
     density)."""
     from rotarykiln.kiln.residual import KilnResidual
 
@@ -314,13 +315,13 @@ def segregated_yields(kiln, solution, peclet: float = 5.0, n_classes: int = 200)
     v = res.volume_flow(qb)
     dt = geo.bed_area * res.dz / (0.5 * (v[1:] + v[:-1]))  # s per cell, mean class
     tau = float(dt.sum())
-    sp = kiln.mechanism.species
+    sp = kiln.chemistry.mechanism.species
     names = [s for s in sp.bed_names]
     idx = {s: i for i, s in enumerate(names)}
     T = solution.t_bed  # cell means, K
     K = np.zeros((T.size, len(names), len(names)))
     R = 8.314462618
-    for r in kiln.mechanism.reactions:
+    for r in kiln.chemistry.mechanism.reactions:
         if r.phase != "bed" or r.law.name != "arrhenius":
             continue
         k = r.params["A"] * np.exp(-r.params["E"] / (R * T))
@@ -328,7 +329,7 @@ def segregated_yields(kiln, solution, peclet: float = 5.0, n_classes: int = 200)
         for s, i in idx.items():
             K[:, i, b] += r.mass_stoichiometry[sp.index(s)] * k
     m0 = np.zeros(len(names))
-    for s, q in kiln.feed.items():
+    for s, q in kiln.feed.flows.items():
         m0[idx[s]] = q
     m0 = m0 / m0.sum()
     edges = np.concatenate([[0.0], np.geomspace(0.02, 8.0, n_classes - 1), [np.inf]])

@@ -2,7 +2,7 @@ r"""Residual of the kiln: energy and species balances of every cell, one Newton 
 
 Unknowns of cell ``j`` (last axis): 0 ``T_bed`` at face j+1 (solids outlet of the cell), 1
 ``T_gas`` at the cell's gas outlet (face j counter-current, face j+1 co-current), 2 the inner wall (with a lining: then each
-lining interface and the shell, :mod:`rotarykiln.kiln.wall`), then the mass flows of the
+lining interface and the shell, :mod:`rotarykiln.kiln.wall.lining`), then the mass flows of the
 reacting bed species at face j+1 and of the reacting gas species at the gas outlet face, each divided by the
 phase's total inlet flow (for bed reactants that are fed and never produced, the square root
 of that ratio). Species that no reaction touches keep their inlet flow.
@@ -27,7 +27,7 @@ flows (implicit upwind: flows never turn negative):
 
     0 = Q_{gw} + Q_{rw} - Q_{cw} - U\pi D (T_w - T_a)
 
-(with a lining, the wall rows of :class:`~rotarykiln.kiln.wall.LinedWall` instead).
+(with a lining, the wall rows of :class:`~rotarykiln.kiln.wall.lining.LinedWall` instead).
 Freeboard (``phase: gas``) reactions (:mod:`rotarykiln.chemistry.gas_phase`) change the gas
 species at the gas temperature and release :math:`-\Delta H_{298}\,r` into the gas balance
 instead (the gas tables hold the sensible part), not into the bed. The
@@ -45,8 +45,7 @@ import dataclasses
 import numpy as np
 
 from rotarykiln.chemistry.mechanism import CellState as ChemState
-from rotarykiln.kiln.discretisation import cell_grid
-from rotarykiln.kiln.dispersion import dispersion_sources
+from rotarykiln.kiln.bed.dispersion import dispersion_sources
 from rotarykiln.kiln.exchange import (
     FLOW_KEYS,
     BulkBed,
@@ -56,14 +55,19 @@ from rotarykiln.kiln.exchange import (
     upwind_weight,
 )
 from rotarykiln.kiln.gas_mixture import MixtureGas, mixture_of
-from rotarykiln.kiln.model import Kiln
-from rotarykiln.kiln.wall import ConstantUWall, LinedWall
+from rotarykiln.kiln.grid import cell_grid
+from rotarykiln.kiln.inputs import Kiln
+from rotarykiln.kiln.inputs.boundary import FULL, BoundaryInputs, Scales
+from rotarykiln.kiln.wall.lining import ConstantUWall, LinedWall
 from rotarykiln.materials.gas import T_REF
 
-__all__ = ["KilnResidual", "T_FLOOR"]
+__all__ = ["KilnResidual", "T_FLOOR", "RATE_FLOOR"]
 
 T_FLOOR = 150.0  # K, temperatures are clipped here inside property evaluations
 RATE_CAP_WIDTH = 5.0  # K, width of the smooth minimum of the rate-temperature continuation
+#: Flow (over the feed) below which a reactant's rate law of order < 1 is regularised when
+#: every species is an unknown (the transient).
+RATE_FLOOR = 1e-6
 
 
 def _capped(T, cap: float):
@@ -73,11 +77,23 @@ def _capped(T, cap: float):
 
 
 class KilnResidual:
-    """Callable residual ``F(x)`` of a :class:`Kiln` on ``n`` equal cells."""
+    """Callable residual ``F(x)`` of a :class:`Kiln` on ``n`` equal cells.
 
-    def __init__(self, kiln: Kiln, n_cells: int):
+    ``q_ref`` (W): the scale of the species rows (they are flows over the phase's inlet flow
+    times ``q_ref``, so that they weigh like the energy rows); None: the reference heat of
+    the kiln (:meth:`reference_heat`). ``every_species``: every bed and gas species is an
+    unknown with its flow linear (the transient's unknowns), instead of the reacting ones
+    only, the fed reactants as square roots (the steady Newton's). The inputs at the ends
+    (:class:`~rotarykiln.kiln.inputs.boundary.BoundaryInputs`) and the continuation
+    parameters (:class:`~rotarykiln.kiln.inputs.boundary.Scales`) are arguments of
+    :meth:`evaluate`; nothing of the residual is set from outside.
+    """
+
+    def __init__(
+        self, kiln: Kiln, n_cells: int, *, q_ref: float | None = None, every_species=False
+    ):
         self.kiln = k = kiln
-        mech = k.mechanism
+        mech = k.chemistry.mechanism
         sp = mech.species
         S = mech.mass_stoichiometry  # (n_reactions, n_species)
         touched = np.any(S != 0.0, axis=0)
@@ -85,12 +101,12 @@ class KilnResidual:
         self.bed_names = tuple(
             s
             for i, s in enumerate(sp.names)
-            if sp[s].phase == "bed" and (touched[i] or k.feed.get(s, 0) > 0)
+            if sp[s].phase == "bed" and (touched[i] or k.feed.flows.get(s, 0) > 0)
         )
         self.gas_names = tuple(
             s
             for i, s in enumerate(sp.names)
-            if sp[s].phase == "gas" and (touched[i] or k.gas_in.get(s, 0) > 0)
+            if sp[s].phase == "gas" and (touched[i] or k.gas.flows.get(s, 0) > 0)
         )
         self.bed_var = tuple(s for s in self.bed_names if touched[sp.index(s)])
         self.gas_var = tuple(s for s in self.gas_names if touched[sp.index(s)])
@@ -104,98 +120,144 @@ class KilnResidual:
         # is reached without a singular Jacobian or negative flows
         made = np.any(S > 0.0, axis=0)
         self.sqrt_mask = np.array(
-            [bool(k.feed.get(s, 0) > 0 and not made[sp.index(s)]) for s in self.bed_var],
+            [bool(k.feed.flows.get(s, 0) > 0 and not made[sp.index(s)]) for s in self.bed_var],
             dtype=bool,
         )
-        self.bed_in = np.array([k.feed.get(s, 0.0) for s in self.bed_names])
-        self.gas_inlet = np.array([k.gas_in.get(s, 0.0) for s in self.gas_names])
+        self.bed_in = np.array([k.feed.flows.get(s, 0.0) for s in self.bed_names])
+        self.gas_inlet = np.array([k.gas.flows.get(s, 0.0) for s in self.gas_names])
         self.bed_scale = float(self.bed_in.sum())
         self.gas_scale = float(self.gas_inlet.sum())
-        self.cp_bed = np.array([k.bed_cp.get(s, sp[s].cp) for s in self.bed_names])
+        self.cp_bed = np.array([k.bed.cp.get(s, sp[s].cp) for s in self.bed_names])
         self.disperses = np.isin(np.arange(len(self.bed_names)), self.bed_pos)
         # bed species with a temperature-dependent enthalpy (a library solid, phases included)
         self.solid_pos = [
-            (i, k.bed_solids[s]) for i, s in enumerate(self.bed_names) if s in k.bed_solids
+            (i, k.bed.solids[s]) for i, s in enumerate(self.bed_names) if s in k.bed.solids
         ]
         # user species with a c_p(T) (chemistry/thermo.py) carry their own enthalpy
         self.solid_pos += [
             (i, sp[s].thermo)
             for i, s in enumerate(self.bed_names)
-            if sp[s].thermo is not None and s not in k.bed_solids and s not in k.bed_cp
+            if sp[s].thermo is not None and s not in k.bed.solids and s not in k.bed.cp
         ]
-        flame = k.flame
+        flame = k.firing.flame
         self.mixture = mixture_of(
             self.gas_names, sp, flame.dissociation if flame is not None else None
         )
-        self.flow_in = {s: float(k.feed.get(s, 0.0)) for s in sp.bed_names}
+        self.flow_in = {s: float(k.feed.flows.get(s, 0.0)) for s in sp.bed_names}
         self.i_h2o = self.gas_names.index("H2O") if "H2O" in self.gas_names else None
         # grid, wall and exchange
         self.grid = g = cell_grid(
-            k.length,
-            k.radius,
+            k.drum.length,
+            k.drum.radius,
             n_cells,
             k.fill_at,
-            k.layers,
-            heat_release=k.heat_release,
-            heat_release_profile=k.heat_release_profile,
+            k.wall.layers,
+            heat_release=k.firing.heat_release,
+            heat_release_profile=k.firing.profile,
         )
         self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
-        if getattr(k, "jacket", None) is not None:  # kiln/jacket.py
-            self.wall = k.jacket.wall(k, g)
-        elif k.layers:
+        if k.wall.jacket is not None:
+            self.wall = k.wall.jacket.wall(k, g)
+        elif k.wall.layers:
             self.wall = LinedWall.of(k, g)
         else:
-            self.wall = ConstantUWall(k.wall_loss_u, 2.0 * np.pi * k.radius, k.ambient_temperature)
+            self.wall = ConstantUWall(
+                k.wall.loss_u, 2.0 * np.pi * k.drum.radius, k.wall.ambient_temperature
+            )
         self.n_wall = self.wall.n_temperatures
         self.i_species = 2 + self.n_wall  # first species unknown
         self.nv = self.i_species + self.nb + self.ng
-        # bed depth solved with the balances (kiln/bed_depth.py): one more unknown per cell
-        self.depth = k.bed_depth
+        # bed depth solved with the balances (kiln/bed/depth.py): one more unknown per cell
+        self.depth = k.bed.depth
         if self.depth is not None:
             self.i_depth = self.nv
             self.nv += 1
-        bed = k.bed_material or BulkBed(
-            k.bulk_density,
+        bed = k.bed.material or BulkBed(
+            k.bed.bulk_density,
             float(np.mean(self.cp_bed)),
-            k.particle_diameter,
-            k.bed_emissivity,
-            k.bed_conductivity,
+            k.bed.particle_diameter,
+            k.bed.emissivity,
+            k.bed.conductivity,
         )
-        self.exchange = CrossSectionExchange.of(k, g, bed, k.gas_emissivity_law)
+        self.exchange = CrossSectionExchange.of(k, g, bed, k.gas.emissivity_law)
         # faces where each cell's gas leaves: j (counter-current) or j+1 (co-current)
-        self.gas_out = slice(None, -1) if k.counter_current else slice(1, None)
+        self.gas_out = slice(None, -1) if k.gas.counter_current else slice(1, None)
         # a burner's stirred recirculation zone: which neighbouring gas nodes mix, and K/dz
         self.stirred = None
-        zone = getattr(k, "stirred_zone", None)
+        zone = k.firing.stirred_zone
         if zone is not None:
             z0, z1, k_mix = zone
             nodes = self.z_nodes[self.gas_out]
-            inside = (nodes >= z0 - 1e-9 * k.length) & (nodes <= z1 + 1e-9 * k.length)
+            inside = (nodes >= z0 - 1e-9 * k.drum.length) & (nodes <= z1 + 1e-9 * k.drum.length)
             self.stirred = ((inside[:-1] & inside[1:]).astype(float), k_mix / self.dz)
             self.stirred_cells = inside
-        self.gas_in_face = -1 if k.counter_current else 0
-        self.reaction_scale = 1.0  # continuation parameter on the reaction rates
-        # continuation parameter: the rates are evaluated at most at about this temperature
-        # (a smooth minimum, RATE_CAP_WIDTH wide), K; inf outside the continuation
-        self.rate_temperature_cap = np.inf
-        self.radiation_scale = 1.0  # continuation parameter on radiation
-        self.release_scale = 1.0  # continuation parameter on the heat released in the gas
-        self.q_ref = 1.0
+        self.gas_in_face = -1 if k.gas.counter_current else 0
+        # reactants fed and never made (the steady model's square-root unknowns): with every
+        # species linear, their rate laws of order < 1 are made Lipschitz (:meth:`rates`)
+        self.regularised = np.zeros(len(self.bed_names), dtype=bool)
+        if every_species:
+            self.regularised = np.array([s in self.bed_var for s in self.bed_names]) & np.isin(
+                self.bed_names,
+                [v for v, m in zip(self.bed_var, self.sqrt_mask, strict=True) if m],
+            )
+            self.bed_var, self.gas_var = self.bed_names, self.gas_names
+            self.nb, self.ng = len(self.bed_names), len(self.gas_names)
+            self.bed_pos = np.arange(self.nb)
+            self.gas_pos = np.arange(self.ng)
+            self.sqrt_mask = np.zeros(self.nb, dtype=bool)
+            self.disperses = np.ones(self.nb, dtype=bool)
+            self.nv = self.i_species + self.nb + self.ng
+            if self.depth is not None:
+                self.i_depth = self.nv
+                self.nv += 1
+        #: the inputs at the ends of the kiln's own inputs (the steady solve's)
+        self.inputs = BoundaryInputs.of(k, self.bed_names, self.gas_names)
+        self.q_ref = float(self.reference_heat() if q_ref is None else q_ref)
+
+    def hottest_source(self) -> float:
+        """The hottest heat source, K: the inlet gas with all the heat released in it, a
+        heating jacket's inlet gas, or a heater zone's shell set-point (for the initial guess
+        and the scale of the energy rows; a kiln heated through its shell starts warm, not at
+        its cold sweep gas)."""
+        k = self.kiln
+        hot = k.gas.temperature
+        if k.firing.heat_release > 0:
+            t = np.linspace(200.0, 3200.0, 601)
+            h = self.mixture.species_enthalpy(t) @ self.gas_inlet
+            target = float(self.mixture.species_enthalpy(k.gas.temperature) @ self.gas_inlet)
+            hot = float(np.interp(target + k.firing.heat_release, h, t))
+        jacket = k.wall.jacket
+        if jacket is not None:
+            hot = max(hot, float(jacket.inlet_temperature))
+        set_points = [z.shell_temperature for z in k.wall.heaters if z.shell_temperature is not None]
+        return max([hot, *set_points])
+
+    def reference_heat(self) -> float:
+        """Reference heat flow (W) of the kiln: the larger of the heat the inlet gas gives up
+        cooling from the hottest source to the feed temperature and the heat the feed takes
+        up over the same span (at least 1 W); the scale of the residual's rows."""
+        th, tf = self.hottest_source(), self.kiln.feed.temperature
+        hg = self.mixture.species_enthalpy(np.array([th, tf]))
+        span_g = float(self.gas_inlet @ (hg[0] - hg[1]))
+        hb = self.bed_enthalpy(np.array([th, tf]))
+        span_s = float(self.bed_in @ (hb[0] - hb[1]))
+        return max(abs(span_g), abs(span_s), 1.0)
 
     # --- unpacking ---------------------------------------------------------------------------
-    def faces(self, x):
-        """Face temperatures and species flows from the unknowns ``x`` (..., n, nv)."""
-        k = self.kiln
+    def faces(self, x, inputs: BoundaryInputs | None = None):
+        """Face temperatures and species flows from the unknowns ``x`` (..., n, nv), with the
+        inlet values of ``inputs`` (default the kiln's own)."""
+        k, u = self.kiln, inputs or self.inputs
         batch = x.shape[:-2]
-        tb = np.concatenate([np.broadcast_to(k.feed_temperature, batch + (1,)), x[..., 0]], -1)
-        t_in = np.broadcast_to(k.gas_inlet_temperature, batch + (1,))
-        parts = [x[..., 1], t_in] if k.counter_current else [t_in, x[..., 1]]
+        tb = np.concatenate([np.broadcast_to(u.feed_temperature, batch + (1,)), x[..., 0]], -1)
+        t_in = np.broadcast_to(u.gas_temperature, batch + (1,))
+        parts = [x[..., 1], t_in] if k.gas.counter_current else [t_in, x[..., 1]]
         tg = np.concatenate(parts, -1)
-        qb = np.broadcast_to(self.bed_in, batch + (self.n + 1, len(self.bed_names))).copy()
+        qb = np.broadcast_to(u.feed, batch + (self.n + 1, len(self.bed_names))).copy()
         i0 = self.i_species
         xb = x[..., i0 : i0 + self.nb]
         qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
-        qg = np.broadcast_to(self.gas_inlet, batch + (self.n + 1, len(self.gas_names))).copy()
+        qg = np.broadcast_to(u.gas, batch + (self.n + 1, len(self.gas_names))).copy()
         xg = x[..., i0 + self.nb : i0 + self.nb + self.ng]
         qg[..., self.gas_out, self.gas_pos] = xg * self.gas_scale
         return tb, tg, qb, qg
@@ -227,13 +289,13 @@ class KilnResidual:
         law = getattr(self.depth, "volume_flow", None)
         if law is not None:
             return law(self.bed_names, qb)
-        return qb.sum(-1) / self.kiln.bulk_density
+        return qb.sum(-1) / self.kiln.bed.bulk_density
 
     def bed_density(self, qb):
         """Bulk density of the bed (kg/m3) at the species flows ``qb``: the kiln's, or mass
         over volume flow with a bed-depth model's own volume law."""
         if getattr(self.depth, "volume_flow", None) is None:
-            return self.kiln.bulk_density
+            return self.kiln.bed.bulk_density
         q = np.maximum(qb, 0.0)
         return q.sum(-1) / np.maximum(self.volume_flow(q), 1e-300)
 
@@ -242,13 +304,17 @@ class KilnResidual:
         """The freeboard gas of the cells from their mean species flows (kg/s)."""
         k = self.kiln
         area = (geo or self.grid).freeboard_area
-        return MixtureGas.of(self.mixture, g_mean, k.pressure, area)
+        return MixtureGas.of(self.mixture, g_mean, k.gas.pressure, area)
 
-    def exchange_of(self, geo):
-        """The cross-section exchange on the geometry ``geo``."""
-        if geo is self.grid:
-            return self.exchange
-        return dataclasses.replace(self.exchange, geometry=geo)
+    def exchange_of(self, geo, omega: float | None = None):
+        """The cross-section exchange on the geometry ``geo`` at the rotation ``omega``
+        (rad/s; default the kiln's)."""
+        changes = {}
+        if geo is not self.grid:
+            changes["geometry"] = geo
+        if omega is not None and omega != self.exchange.omega:
+            changes["omega"] = omega
+        return dataclasses.replace(self.exchange, **changes) if changes else self.exchange
 
     def coefficients(self, tg, tb, tw, g_mean, check=False, geo=None):
         """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell means."""
@@ -257,32 +323,59 @@ class KilnResidual:
         return self.exchange_of(geo).coefficients(gas, tg, tb, tw, check=check)
 
     # --- chemistry ------------------------------------------------------------------------------
-    def rates(self, tb, tg, qb_out, qg_out, q_bed_in, h_gb, geo=None, tb_out=None):
-        """Production (..., n, n_species) kg/(s m) and heat absorbed (..., n) W/m.
+    def rates(
+        self,
+        tb,
+        tg,
+        qb_out,
+        qg_out,
+        q_bed_in,
+        h_gb,
+        geo=None,
+        tb_out=None,
+        *,
+        scales: Scales = FULL,
+        inputs: BoundaryInputs | None = None,
+    ):
+        r"""Production (..., n, n_species) kg/(s m) and heat absorbed (..., n) W/m.
 
         ``tb_out``: bed temperature at each cell's solids outlet face (K), for rate laws that
         hold the bed at a phase change (boiling drying); the cell mean when not given.
+        With every species an unknown, the flow of each reactant fed and never made is seen
+        by its rate law as :math:`q^2/(q + \epsilon)` (:math:`\epsilon` =
+        :data:`RATE_FLOOR` x the feed): a rate of order 1/2 then stays Lipschitz as the
+        reactant runs out (a square root has an infinite slope at complete conversion, which
+        an implicit integrator's Newton iteration cannot follow). Above 100 epsilon the rate
+        changes by < 1 %, and the stoichiometry (so every balance) is untouched.
         """
         k = self.kiln
         geo = geo or self.grid
+        if self.regularised.any():
+            q = np.maximum(qb_out, 0.0)
+            eps = RATE_FLOOR * self.bed_scale
+            qb_out = np.where(self.regularised, q * q / (q + eps), q)
+        if inputs is None or inputs is self.inputs:
+            flow_in = self.flow_in
+        else:
+            flow_in = {s: float(q) for s, q in zip(self.bed_names, inputs.feed, strict=True)}
         shape = tb.shape
         flat = int(np.prod(shape))
         qb = np.maximum(qb_out, 0.0).reshape(flat, -1)
         bed = {s: qb[:, i] for i, s in enumerate(self.bed_names)}
         if self.depth is None:
-            holdup = qb.sum(-1) / k.bed_velocity
+            holdup = qb.sum(-1) / k.bed.velocity
         else:
             rho = self.bed_density(qb_out)
             holdup = (rho * np.broadcast_to(geo.bed_area, shape)).reshape(flat)
         xg = self.mixture.mole_fractions(qg_out).reshape(flat, -1)
-        pp = {s: k.pressure * xg[:, i] for i, s in enumerate(self.gas_names)}
-        if k.steam_flow is not None:
-            steam = np.full(flat, k.steam_flow)
+        pp = {s: k.gas.pressure * xg[:, i] for i, s in enumerate(self.gas_names)}
+        if k.chemistry.steam_flow is not None:
+            steam = np.full(flat, k.chemistry.steam_flow)
         elif self.i_h2o is not None:
             steam = np.maximum(qg_out[..., self.i_h2o], 0.0).reshape(flat)
         else:
             steam = np.zeros(flat)
-        inputs = {
+        cell_inputs = {
             "steam_mass_flow": steam,
             "drying_conductance": np.broadcast_to(h_gb * geo.chord, shape).reshape(flat),
             "bed_heat_input": q_bed_in.reshape(flat),
@@ -292,19 +385,19 @@ class KilnResidual:
             ).reshape(flat),
         }
         t_bed, t_gas = np.maximum(tb, T_FLOOR), np.maximum(tg, T_FLOOR)
-        if np.isfinite(self.rate_temperature_cap):
-            t_bed, t_gas = (_capped(t, self.rate_temperature_cap) for t in (t_bed, t_gas))
+        if np.isfinite(scales.rate_temperature_cap):
+            t_bed, t_gas = (_capped(t, scales.rate_temperature_cap) for t in (t_bed, t_gas))
         st = ChemState(
             t_bed.reshape(flat),
             t_gas.reshape(flat),
             bed,
             holdup,
             pp,
-            self.flow_in,
-            inputs,
+            flow_in,
+            cell_inputs,
         )
-        out = self.kiln.mechanism.rates(st)
-        lam = self.reaction_scale
+        out = self.kiln.chemistry.mechanism.rates(st)
+        lam = scales.reaction
         prod = lam * out.production.reshape(shape + (-1,))
         heat = lam * out.heat_absorbed.reshape(shape)
         rate = lam * out.reaction_rate.reshape(shape + (-1,))
@@ -313,10 +406,23 @@ class KilnResidual:
         return prod, heat, rate, heat_gas, prod_gp.reshape(prod.shape)
 
     # --- residual -------------------------------------------------------------------------------
-    def evaluate(self, x, full: bool = False):
-        """Residual (..., n, nv): W per cell for the energy rows, scaled flows for species."""
+    def evaluate(
+        self,
+        x,
+        full: bool = False,
+        *,
+        scales: Scales = FULL,
+        inputs: BoundaryInputs | None = None,
+    ):
+        """Residual (..., n, nv): W per cell for the energy rows, scaled flows for species.
+
+        ``scales``: the continuation parameters; ``inputs``: the inputs at the ends (default
+        the kiln's own, :attr:`inputs`). With ``full``, also the per-cell fluxes, the
+        production by the bed reactions, the reaction rates and the face values.
+        """
         dz = self.dz
-        tb_n, tg_n, qb, qg = self.faces(x)
+        u = inputs or self.inputs
+        tb_n, tg_n, qb, qg = self.faces(x, u)
         tbn = np.maximum(tb_n, T_FLOOR)
         tgn = np.maximum(tg_n, T_FLOOR)
         tb = 0.5 * (tbn[..., :-1] + tbn[..., 1:])
@@ -325,13 +431,13 @@ class KilnResidual:
         g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
         geo = self.geometry(x)
         gas = self.gas_state(g_mean, geo)
-        exchange = self.exchange_of(geo)
-        tg, co = self.gas_mean(tgn, tb, tw, g_mean, gas, exchange, geo)
+        exchange = self.exchange_of(geo, u.omega)
+        tg, co = self.gas_mean(tgn, tb, tw, g_mean, gas, exchange, geo, scales.radiation)
         if self.stirred is not None:
             # a stirred cell is a tank: its gas is at the temperature it leaves at, not the
             # mean of its faces (its inlet face may be the burner's products, unmixed)
             tg = np.where(self.stirred_cells, np.maximum(x[..., 1], T_FLOOR), tg)
-        fl, co = exchange.flows(gas, tg, tb, tw, self.radiation_scale, co=co)
+        fl, co = exchange.flows(gas, tg, tb, tw, scales.radiation, co=co)
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
@@ -344,6 +450,8 @@ class KilnResidual:
             co["h_gb"],
             geo,
             tbn[..., 1:],
+            scales=scales,
+            inputs=u,
         )
         w_bed = prod[..., self.bed_idx]
         w_gas = prod[..., self.gas_idx]
@@ -354,52 +462,53 @@ class KilnResidual:
         hg_at_bed = self.mixture.species_enthalpy(tb)
         s_bed = -heat + (w_bed * hb_cell).sum(-1)
         s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
-        if self.kiln.heat_release > 0:
-            s_gas = s_gas + self.release_scale * self.grid.heat_release
+        release = self.release(scales, u)
+        if self.kiln.firing.heat_release > 0:
+            s_gas = s_gas + release
         hb_nodes = self.bed_enthalpy(tbn)
         Hb = (qb * hb_nodes).sum(-1)
         Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
         disp_species = None
-        if self.kiln.bed_dispersion > 0:
+        if self.kiln.bed.dispersion > 0:
             rho = self.bed_density(0.5 * (qb[..., 1:, :] + qb[..., :-1, :]))
             holdup = rho * np.broadcast_to(geo.bed_area, tb.shape)
             disp_energy, disp_species = dispersion_sources(
-                self.kiln.bed_dispersion, holdup, qb, hb_nodes, dz, self.disperses
+                self.kiln.bed.dispersion, holdup, qb, hb_nodes, dz, self.disperses
             )
             r_bed = r_bed - disp_energy
-        sign = 1.0 if self.kiln.counter_current else -1.0  # downstream minus upstream
+        sign = 1.0 if self.kiln.gas.counter_current else -1.0  # downstream minus upstream
         r_gas = sign * (Hg[..., :-1] - Hg[..., 1:]) + dz * (q_gw + q_gb + q_rw + q_rb - s_gas)
         if self.stirred is not None:
             r_gas = r_gas - self._stirred_gain(x[..., 1])
         parts = [r_bed[..., None], r_gas[..., None]] + [(dz * r)[..., None] for r in wall_rows]
+        q_ref = self.q_ref
         if self.nb:
             qv = qb[..., self.bed_pos]
             net = qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]
             if disp_species is not None:
                 net = net - disp_species[..., self.bed_pos]
             rb = net / self.bed_scale
-            parts.append(rb * self.q_ref)
+            parts.append(rb * q_ref)
         if self.ng:
             gv = qg[..., self.gas_pos]
             dg = sign * (gv[..., :-1, :] - gv[..., 1:, :])
             rg = (dg - dz * w_gas[..., self.gas_pos]) / self.gas_scale
-            parts.append(rg * self.q_ref)
+            parts.append(rg * q_ref)
         if self.depth is not None:
             q_vol = self.volume_flow(qb)
             rd = self.depth.residual(self.depth_faces(x), q_vol, dz)
-            parts.append((rd * self.q_ref / self.depth.radius)[..., None])
+            parts.append((rd * q_ref / self.depth.radius)[..., None])
         R = np.concatenate(parts, axis=-1)
         if not full:
             return R
         chemistry = {
-            "q_source_gas": np.broadcast_to(self.release_scale * self.grid.heat_release, tg.shape)
-            * 1.0,
+            "q_source_gas": np.broadcast_to(release, tg.shape) * 1.0,
             "q_reaction_absorbed": heat + heat_gas,
             "q_bed_chemistry": s_bed,
             "q_gas_chemistry": s_gas,
         }
-        if self.kiln.heaters or getattr(self.kiln, "jacket", None) is not None:
+        if self.kiln.wall.heaters or self.kiln.wall.jacket is not None:
             chemistry["q_electric_heating"] = self.wall.heating(tl)
         if self.depth is not None:
             chemistry["fill"] = geo.fill
@@ -408,7 +517,15 @@ class KilnResidual:
         # production by the bed reactions (the solver's global balance prices it at T_bed)
         return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)
 
-    def gas_mean(self, tgn, tb, tw, g_mean, gas, exchange, geo):
+    def release(self, scales: Scales = FULL, inputs: BoundaryInputs | None = None):
+        """Heat released in the gas per metre of each cell (W/m): the kiln's release profile
+        at the heat release of ``inputs``, times the continuation's ``scales.release``."""
+        u = inputs or self.inputs
+        q0 = self.kiln.firing.heat_release
+        factor = scales.release * (u.heat_release / q0 if q0 > 0 else 0.0)
+        return factor * self.grid.heat_release
+
+    def gas_mean(self, tgn, tb, tw, g_mean, gas, exchange, geo, radiation_scale=1.0):
         """Cell-mean gas temperatures (K) from the face ones, and the exchange coefficients.
 
         The faces weighted by :func:`~rotarykiln.kiln.exchange.upwind_weight` of the cell's
@@ -419,12 +536,12 @@ class KilnResidual:
         face average.
         """
         t_in, t_out = (tgn[..., 1:], tgn[..., :-1])
-        if not self.kiln.counter_current:
+        if not self.kiln.gas.counter_current:
             t_in, t_out = t_out, t_in
         t_avg = 0.5 * (t_in + t_out)
         co = exchange.coefficients(gas, t_avg, tb, tw)
         t_max = np.maximum(np.maximum(t_in, t_out), np.maximum(tw, tb))
-        conductance = gas_conductance(co, geo, t_max, self.radiation_scale)
+        conductance = gas_conductance(co, geo, t_max, radiation_scale)
         capacity = g_mean.sum(-1) * gas.cp(t_avg)
         ntu = conductance * self.dz / np.maximum(capacity, 1e-300)
         theta = upwind_weight(ntu)

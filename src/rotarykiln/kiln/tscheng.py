@@ -12,7 +12,6 @@ number, not fitted to the 44 runs. See docs/validation.md.
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
@@ -25,7 +24,7 @@ if TYPE_CHECKING:
 from scipy.optimize import brentq
 
 from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
-from rotarykiln.kiln.model import Closures, Kiln
+from rotarykiln.kiln.inputs import Closures, Kiln, Wall
 from rotarykiln.materials.gas import air_table
 from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.materials.solids import load_solid
@@ -124,12 +123,12 @@ def _layers() -> tuple[Layer, ...]:
 
 
 def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Kiln:
-    """The :class:`~rotarykiln.kiln.model.Kiln` of Tscheng's run ``run`` (e.g. ``"A16"``) from its measured inputs.
+    """The :class:`~rotarykiln.kiln.inputs.kiln.Kiln` of Tscheng's run ``run`` (e.g. ``"A16"``) from its measured inputs.
 
     Examples
     --------
     >>> k = tscheng_kiln("A16")
-    >>> round(k.gas_inlet_temperature, 1), round(k.feed_flow * 3600, 1)
+    >>> round(k.gas.temperature, 1), round(k.feed_flow * 3600, 1)
     (535.0, 14.2)
     """
     from rotarykiln.errors import InputError
@@ -152,9 +151,8 @@ def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Kil
         gas_composition=AIR,
         gas_flow=float(r["Air flow (kg/hr)"]) / 3600.0,
         gas_inlet_temperature=float(t_gas[-1]),
-        layers=_layers(),
+        wall=Wall(layers=_layers(), ambient_temperature=AMBIENT),
         counter_current=True,
-        ambient_temperature=AMBIENT,
         closures=closures or Closures(),
         measurements={
             "z_gas": Z_GAS_BED,
@@ -172,8 +170,10 @@ def tscheng_kiln(run: str, closures: Closures | None = None, **overrides) -> Kil
     if "bed_dispersion" in overrides:
         return kiln
     # the bed's axial dispersion of Sherritt et al. (2003), as heat: cases take by default
-    d = sherritt_dispersion(kiln.omega, 2.0 * kiln.radius, kiln.particle_diameter, kiln.mean_fill)
-    return dataclasses.replace(kiln, bed_dispersion=float(d))
+    d = sherritt_dispersion(
+        kiln.drum.omega, 2.0 * kiln.drum.radius, kiln.bed.particle_diameter, kiln.mean_fill
+    )
+    return kiln.replace(bed__dispersion=float(d))
 
 
 @dataclass(frozen=True)
@@ -218,7 +218,7 @@ def validate_all(closures: Closures | None = None, n_cells: int = 100) -> pd.Dat
     """Solve all 44 runs and score them: one row per run, RMSE in K."""
     import pandas as pd
 
-    from rotarykiln.kiln.solve import solve_kiln
+    from rotarykiln.kiln.steady.solve import solve_kiln
 
     rows = []
     for run in load_tscheng_runs().index:

@@ -2,24 +2,25 @@
 
 Burn-off and production of the charcoal-activation case against residence time, gas flow,
 solid inlet temperature, steam flow and solid flow, one at a time around the built-in case
-``cases/charcoal_activation.yaml``. The ranges are not printed in seed 004 (its figures are lost);
-the ones below bracket the nominal values by about x0.3-x3 (documented in docs/studies.md).
-Run it with the kiln model once ``kiln/`` exists: ``run_sweep(kiln_burn_off, builtin_case(...),
-ahmad_chapter5_design())``.
+``cases/charcoal_activation.yaml``. The ranges and Ahmad's reported directions are data:
+src/rotarykiln/data/ahmad2006/chapter5_study.yaml (its README gives their provenance: the ranges
+are not printed in seed 004, whose figures are lost, and bracket the nominal values by about
+x0.3-x3, documented in docs/studies.md). :func:`run_chapter5` runs the design on the kiln model.
 """
 
 from __future__ import annotations
 
+from importlib import resources
+
 import yaml
 
-from rotarykiln.cases import builtin_case_path
+from rotarykiln.cases import builtin_case
 from rotarykiln.studies.design import CaseSpec, one_at_a_time
 
 __all__ = [
     "CHAPTER5_RANGES",
     "CHAPTER5_DIRECTIONS",
     "ahmad_chapter5_design",
-    "builtin_case",
     "chapter5_directions",
     "chapter5_params",
     "chapter5_sobol",
@@ -27,46 +28,22 @@ __all__ = [
     "run_chapter5",
 ]
 
-#: Field path -> values swept (as in the case file, with units).
-CHAPTER5_RANGES = {
-    "bed.residence_time": ["2000 s", "3000 s", "4500 s", "6480 s", "8000 s", "10000 s"],
-    "gas.flow": [
-        "0.010 kg/s",
-        "0.015 kg/s",
-        "0.020 kg/s",
-        "0.030 kg/s",
-        "0.045 kg/s",
-        "0.060 kg/s",
-    ],
-    "operation.feed_temperature": ["300 K", "400 K", "500 K", "600 K", "700 K"],
-    "gas.steam_flow": [
-        "0.001 kg/s",
-        "0.0025 kg/s",
-        "0.005 kg/s",
-        "0.0075 kg/s",
-        "0.010 kg/s",
-    ],
-    "operation.feed": [
-        "0.001 kg/s",
-        "0.002 kg/s",
-        "0.00333 kg/s",
-        "0.005 kg/s",
-        "0.0075 kg/s",
-        "0.010 kg/s",
-    ],
-}
+def _study() -> dict:
+    """The study of src/rotarykiln/data/ahmad2006/chapter5_study.yaml (README.md beside it)."""
+    path = resources.files("rotarykiln") / "data" / "ahmad2006" / "chapter5_study.yaml"
+    with path.open("r", encoding="utf-8") as fh:
+        return yaml.safe_load(fh)
 
-#: Sign of d(burn-off)/d(parameter) reported by seed 004 chapter 4.5 (0: "insignificant").
-#: Gas flow: seed 004 reports burn-off falling to 0 % with more gas, because "the solid cannot
-#: achieve the reaction temperature"; with hot inlet gas more gas should heat the solid MORE
-#: (notes 004 6.3 flag this): the kiln model's answer is to be shown and explained.
-CHAPTER5_DIRECTIONS = {
-    "bed.residence_time": +1,
-    "gas.flow": -1,
-    "operation.feed_temperature": 0,
-    "gas.steam_flow": +1,
-    "operation.feed": -1,
-}
+
+_STUDY = _study()
+
+#: Field path -> values swept (as in the case file, with units); not printed in seed 004, chosen
+#: as documented in docs/studies.md (the data file's README).
+CHAPTER5_RANGES: dict[str, list[str]] = _STUDY["ranges"]
+
+#: Sign of d(burn-off)/d(parameter) reported by seed 004 chapter 4.5 (0: "insignificant"); the
+#: gas-flow direction is flagged as doubtful (the data file's comments and README).
+CHAPTER5_DIRECTIONS: dict[str, int] = _STUDY["directions"]
 
 
 def ahmad_chapter5_design(ranges: dict | None = None) -> list[CaseSpec]:
@@ -79,19 +56,6 @@ def ahmad_chapter5_design(ranges: dict | None = None) -> list[CaseSpec]:
     (29, 'base', 'bed.residence_time')
     """
     return one_at_a_time(ranges or CHAPTER5_RANGES)
-
-
-def builtin_case(name: str) -> dict:
-    """A built-in case file (``cases/<name>.yaml``) as a plain nested dict.
-
-    Examples
-    --------
-    >>> builtin_case("charcoal_activation")["kiln"]["length"]
-    '3.7 m'
-    """
-    path = builtin_case_path(name)
-    with open(path, encoding="utf-8") as fh:
-        return yaml.safe_load(fh)
 
 
 def run_chapter5(max_workers: int | None = 2, ranges: dict | None = None):

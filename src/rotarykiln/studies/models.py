@@ -26,13 +26,13 @@ def _scalars(summary: Mapping) -> dict:
 
 
 def kiln_model(case: dict) -> dict:
-    """Steady kiln model of a case (:func:`rotarykiln.kiln.run.run_kiln_case`): its summary
+    """Steady kiln model of a case (:func:`rotarykiln.commands.kiln_runs.run_kiln_case`): its summary
     as scalars (outlet temperatures, heat flows, shell loss, efficiency, conversions and
     yields of a reacting bed, balances, Newton iterations; NaN values left out)."""
     import math
 
     from rotarykiln.case import parse_case
-    from rotarykiln.kiln.run import run_kiln_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
 
     summary = run_kiln_case(parse_case(case)).summary()
     summary.pop("name", None)
@@ -52,7 +52,7 @@ def kiln_profile_model(case: dict) -> dict:
     import numpy as np
 
     from rotarykiln.case import parse_case
-    from rotarykiln.kiln.run import run_kiln_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
 
     sol = run_kiln_case(parse_case(case))
     summary = sol.summary()
@@ -95,7 +95,7 @@ def profile_columns(names) -> dict[str, list[tuple[float, str]]]:
 def transport_model(case: dict) -> dict:
     """Bed profile of a case with a ``transport:`` section: mean fill, hold-up, residence time."""
     from rotarykiln.case import parse_case
-    from rotarykiln.kiln.coupling import bed_profile_from_case
+    from rotarykiln.commands.model_runs import bed_profile_from_case
 
     p = bed_profile_from_case(parse_case(case))
     return {

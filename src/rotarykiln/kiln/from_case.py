@@ -1,0 +1,557 @@
+"""Build the :class:`~rotarykiln.kiln.inputs.kiln.Kiln` of a validated case file.
+
+:func:`kiln_from_case` is the one entry point from a :class:`rotarykiln.case.Case` to the
+kiln model (the steady solve, the transient, sweeps, the app). The case's sections map onto the
+model as follows:
+
+- ``kiln``, ``operation`` (speed, feed, feed temperature, gas direction);
+- ``material``: the bed; without ``chemistry`` an inert library ``solid`` (c_p(T) with its
+  phases); with ``chemistry`` the feed ``composition`` of bed species, with constant
+  properties (``specific_heat``, ``thermal_conductivity``, ``emissivity``; a library solid
+  named by ``solid`` or ``name`` fills the gaps);
+- ``bed`` (fill or residence time, axial dispersion) or ``transport`` (the Kramers/Scott bed
+  profile; with ``chemistry`` the Kramers bed depth is solved with the balances, so the
+  profile follows the mass the bed loses);
+- ``gas`` (a hot-gas or sweep-gas inlet) or ``burner`` (fuel and air, burnt by
+  :func:`rotarykiln.kiln.combustion.flame.fire`);
+- ``wall`` (lining layers, a constant U or a heating jacket; heater zones), ``closures``,
+  ``measurements``,
+  ``solver`` (cells), ``chemistry`` (reactions).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from rotarykiln.errors import InputError
+from rotarykiln.kiln.combustion.flame import AirStream, Burner, fire
+from rotarykiln.kiln.inputs import (
+    SEED004_CLOSURES,
+    Bed,
+    Chemistry,
+    Closures,
+    Drum,
+    Feed,
+    Firing,
+    GasInlet,
+    Kiln,
+    Wall,
+)
+from rotarykiln.kiln.wall.lining import HeaterZone
+from rotarykiln.materials.lining import Layer
+
+__all__ = [
+    "burner_from_case",
+    "closures_from_case",
+    "jacket_from_case",
+    "kiln_from_case",
+    "layers_from_case",
+    "mechanism_from_case",
+]
+
+AIR = "O2:0.2095, N2:0.7808, AR:0.0097"
+"""Default composition of an inlet gas (mole fractions): dry air."""
+
+
+def kiln_from_case(case) -> tuple[Kiln, int]:
+    """The :class:`~rotarykiln.kiln.inputs.kiln.Kiln` and cell count of a validated case.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    >>> round(kiln.drum.length, 2), cells, kiln.firing.flame is not None
+    (5.5, 100, True)
+    """
+    if not case.has_kiln_model:
+        raise InputError(
+            "gas", None, "a gas: or burner: section (the kiln's heat source), or wall.heaters"
+        )
+    if case.wall is None:
+        raise InputError("wall", None, "given (lining: layers, or U: a loss coefficient)")
+    feed = case.operation.feed
+    if feed is None or feed <= 0:
+        raise InputError("operation.feed", feed, "> 0 kg/s for the kiln model")
+    gas = _inlet_gas(case)
+    if case.chemistry is None:
+        kiln = _inert_kiln(case, gas)
+    else:
+        kiln = _reacting_kiln(case, gas)
+    kiln = kiln.replace(bed__dispersion=_bed_dispersion(case, kiln))
+    return kiln, int(case.solver.cells)
+
+
+def _common(case, gas: dict) -> dict:
+    """The branches of :class:`Kiln` every kind of kiln takes the same way: the wall, the
+    burner's firing, the closures, the name and the measurements."""
+    meas = None
+    if case.measurements is not None:
+        m = case.measurements
+        dump = m.model_dump(exclude={"thermocouple"})
+        meas = {k: np.asarray(v, dtype=float) for k, v in dump.items()}
+        meas["wall_interface"] = int(m.wall_interface)
+        if m.thermocouple is not None:
+            meas["thermocouple"] = m.thermocouple.model_dump()
+    return dict(
+        wall=_wall(case),
+        firing=Firing(
+            heat_release=gas.get("heat_release", 0.0),
+            profile=gas.get("heat_release_profile"),
+            flame=gas.get("flame"),
+            soot=gas.get("soot"),
+            stirred_zone=gas.get("stirred_zone"),
+        ),
+        closures=closures_from_case(case.closures),
+        measurements=meas,
+        name=case.name,
+    )
+
+
+def closures_from_case(section) -> Closures:
+    """The :class:`~rotarykiln.kiln.inputs.closures.Closures` of a case file's ``closures``
+    section: its ``preset`` (``default``: the library's defaults; ``seed004``:
+    :data:`~rotarykiln.kiln.inputs.closures.SEED004_CLOSURES`) with the keys it gives.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import Closures as ClosuresSection
+    >>> c = closures_from_case(ClosuresSection(gas_bed="gorog1982"))
+    >>> c.gas_bed, c.gas_wall
+    ('gorog1982', 'tscheng1979')
+    >>> closures_from_case(ClosuresSection(preset="seed004", radiation=False)).gas_wall
+    'gorog1982'
+    """
+    base = SEED004_CLOSURES if section.preset == "seed004" else Closures()
+    given = {f.name: getattr(section, f.name) for f in dataclasses.fields(Closures)}
+    return dataclasses.replace(base, **{k: v for k, v in given.items() if v is not None})
+
+
+def _inert_kiln(case, gas: dict) -> Kiln:
+    """A bed of a library solid that does not react (:meth:`Kiln.inert`)."""
+    from rotarykiln.commands.model_runs import bed_fill_profile
+    from rotarykiln.materials.solids import load_solid
+
+    m = case.material
+    name = m.solid or _library_name(m.name)
+    if name is None:
+        raise InputError(
+            "material.solid", None, "a library solid (the bed of a kiln without chemistry:)"
+        )
+    overrides = {}
+    if m.bulk_density is not None:
+        overrides["bulk_density"] = m.bulk_density
+    if m.particle_size is not None:
+        overrides["particle_diameter"] = m.particle_size
+    if m.specific_heat is not None:
+        overrides["cp_const"] = m.specific_heat
+    if m.emissivity is not None:
+        overrides["emissivity"] = m.emissivity
+    if m.thermal_conductivity is not None:
+        overrides["bed_conductivity"] = m.thermal_conductivity
+    solid = load_solid(name, **overrides)
+    bed = case.bed
+    if case.transport is not None:
+        fill = bed_fill_profile(case)
+    elif bed is not None and bed.fill is not None:
+        fill = np.asarray(bed.fill, dtype=float) if isinstance(bed.fill, list) else bed.fill
+    elif bed is not None and bed.residence_time is not None:
+        area = math.pi * (case.kiln.diameter / 2.0) ** 2
+        fill = case.operation.feed * bed.residence_time / case.kiln.length / solid.bulk_density
+        fill /= area
+    else:
+        raise InputError("bed.fill", None, "given (or bed.residence_time, or a transport: section)")
+    kiln = Kiln.inert(
+        fill=fill,
+        solid=solid,
+        solids_flow=case.operation.feed,
+        solids_inlet_temperature=case.operation.feed_temperature,
+        gas_composition=gas["gas_in_mole"],
+        gas_flow=gas["gas_flow"],
+        gas_inlet_temperature=gas["gas_inlet_temperature"],
+        length=case.kiln.length,
+        radius=case.kiln.diameter / 2.0,
+        omega=case.operation.speed,
+        counter_current=case.operation.counter_current,
+        **_common(case, gas),
+    )
+    kiln = kiln.replace(gas__pressure=gas["pressure"], gas__emissivity_law=gas.get("law"))
+    if gas.get("steam_flow") is not None:
+        kiln = kiln.replace(chemistry__steam_flow=gas["steam_flow"])
+    if case.gas is not None and case.gas.mass_fractions is not None:  # as given, by mass
+        kiln = kiln.replace(gas__flows=gas["gas_in"])
+    return kiln
+
+
+def _reacting_kiln(case, gas: dict) -> Kiln:
+    """A bed of reacting species (``chemistry:``, feed ``material.composition``)."""
+    ch = case.chemistry
+    if ch.gas_gain_per_carbon != "corrected":
+        raise InputError(
+            "chemistry.gas_gain_per_carbon",
+            ch.gas_gain_per_carbon,
+            "corrected (seed 004's 30/12 gas gain creates mass and breaks the element balance)",
+        )
+    m = case.material
+    if m.composition is None:
+        raise InputError(
+            "material.composition", None, "given with chemistry: (bed-species mass fractions)"
+        )
+    feed = case.operation.feed
+    lib = _library_solid(m.solid or m.name)
+    rho = m.bulk_density or (lib.bulk_density if lib else None)
+    if rho is None:
+        raise InputError("material.bulk_density", None, "given (or a library material.solid)")
+    length, radius = case.kiln.length, case.kiln.diameter / 2.0
+    bed_depth = None
+    bed = case.bed
+    if case.transport is not None:
+        bed_depth, fill, velocity = _kramers_bed(case, rho)
+    elif bed is not None and bed.residence_time is not None:
+        velocity = length / bed.residence_time
+        fill = feed * bed.residence_time / length / rho / (math.pi * radius**2)
+    elif bed is not None and bed.fill is not None:
+        fill = bed.mean_fill
+        velocity = feed / (rho * fill * math.pi * radius**2)
+    else:
+        raise InputError("bed.residence_time", None, "given (or bed.fill, or a transport: section)")
+    if not 0 < fill <= 0.5:
+        raise InputError("bed.residence_time", None, f"a fill <= 0.5 (got {fill:.3g})")
+    mech = mechanism_from_case(ch)
+    bed_cp = {}
+    if m.specific_heat is not None:
+        bed_cp = {n: m.specific_heat for n in mech.species.bed_names if n != "H2O(l)"}
+    kb = m.thermal_conductivity or (lib.bed_conductivity if lib else None) or 0.3
+    eps_b = m.emissivity if m.emissivity is not None else (lib.emissivity if lib else 0.9)
+    dp = m.particle_size or (lib.particle_diameter if lib else 5e-3)
+    return Kiln(
+        drum=Drum(length, radius, case.operation.speed),
+        bed=Bed(
+            fill=fill,
+            velocity=velocity,
+            bulk_density=rho,
+            conductivity=kb,
+            emissivity=eps_b,
+            particle_diameter=dp,
+            cp=bed_cp,
+            depth=bed_depth,
+        ),
+        feed=Feed({n: w * feed for n, w in m.composition.items()}, case.operation.feed_temperature),
+        gas=GasInlet(
+            gas["gas_in"],
+            gas["gas_inlet_temperature"],
+            pressure=gas["pressure"],
+            counter_current=case.operation.counter_current,
+            emissivity_law=gas.get("law"),
+        ),
+        chemistry=Chemistry(mech, steam_flow=gas.get("steam_flow")),
+        **_common(case, gas),
+    )
+
+
+def _inlet_gas(case) -> dict:
+    """Inlet gas of the kiln: the burner's products, or the ``gas:`` section.
+
+    Returns the species mass flows ``gas_in`` (kg/s, species of the chemistry table; others
+    such as traces of NO or OH counted as N2), the mole-fraction text ``gas_in_mole`` (for
+    :meth:`Kiln.inert`), ``gas_flow``, ``gas_inlet_temperature`` and the burner's
+    ``heat_release``, ``heat_release_profile`` and ``flame``, the gas emissivity line,
+    ``steam_flow`` and ``pressure``.
+    """
+    g, b = case.gas, case.burner
+    out: dict = {"pressure": g.pressure if g is not None else 101325.0}
+    if g is not None:
+        if g.emissivity_a is not None:
+            law = (g.emissivity_a, g.emissivity_b_per_K or 0.0, g.emissivity_minimum or 0.0)
+            out["law"] = law
+        if g.steam_flow is not None:
+            out["steam_flow"] = g.steam_flow
+    length = case.kiln.length
+    if b is not None:
+        if g is not None and (g.flow is not None or g.temperature is not None):
+            raise InputError(
+                "gas.flow", g.flow, "absent with a burner: (the burner makes the inlet gas)"
+            )
+        if b.flame_length is not None and b.flame_length > length:
+            raise InputError(
+                "burner.flame_length",
+                f"{b.flame_length:.6g} m",
+                f"<= the kiln length ({length:.6g} m)",
+            )
+        flame = fire(
+            burner_from_case(b, case.operation.counter_current), case.kiln.diameter, length
+        )
+        p = flame.products
+        if b.soot_volume_fraction > 0:
+            out["soot"] = _luminous_zone(b, flame, length, case.operation.counter_current)
+        out.update(
+            gas_in=_mass_flows(p.composition, p.mass_flow),
+            gas_in_mole=p.composition,
+            gas_flow=p.mass_flow,
+            gas_inlet_temperature=flame.inlet_temperature,
+            heat_release=flame.heat_release,
+            heat_release_profile=flame.release_profile(length, case.operation.counter_current),
+            stirred_zone=flame.stirred_zone(length, case.operation.counter_current),
+            flame=flame,
+        )
+        return out
+    if g is None or g.flow is None or g.flow <= 0 or g.temperature is None:
+        raise InputError(
+            "gas.flow",
+            None if g is None else g.flow,
+            "> 0 kg/s with gas.temperature (or a burner: section)",
+        )
+    if g.mass_fractions is not None:
+        gas_in = {n: w * g.flow for n, w in g.mass_fractions.items()}
+        mole = _mole_text(g.mass_fractions)
+    else:
+        mole = g.composition or AIR
+        gas_in = _mass_flows(mole, g.flow)
+    out.update(
+        gas_in=gas_in, gas_in_mole=mole, gas_flow=g.flow, gas_inlet_temperature=g.temperature
+    )
+    return out
+
+
+def _luminous_zone(section, flame, length: float, counter_current: bool):
+    """(f_v, z_start, z_end) of a sooting flame: the flame length from the burner end."""
+    lf = flame.flame_length
+    if lf is None:
+        raise InputError(
+            "burner.soot_volume_fraction",
+            section.soot_volume_fraction,
+            "0 without burner.flame_length or burner.nozzle_diameter (the luminous zone is "
+            "the flame)",
+        )
+    lf = min(float(lf), length)
+    zone = (length - lf, length) if counter_current else (0.0, lf)
+    return (float(section.soot_volume_fraction), *zone)
+
+
+def _mass_flows(composition, flow: float) -> dict[str, float]:
+    """Species mass flows (kg/s) of ``flow`` kg/s of a gas of mole fractions ``composition``
+    (text or pairs); species outside the chemistry table are counted as N2, by mass."""
+    from rotarykiln.chemistry.species import default_species
+    from rotarykiln.materials.gas import molar_mass, parse_composition
+
+    pairs = parse_composition(composition) if isinstance(composition, str) else composition
+    known = set(default_species().gas_names)
+    mass: dict[str, float] = {}
+    for name, x in pairs:
+        key = name if name in known else "N2"
+        mass[key] = mass.get(key, 0.0) + x * molar_mass(f"{name}:1")
+    total = sum(mass.values())
+    return {k: flow * v / total for k, v in mass.items()}
+
+
+def _mole_text(mass_fractions: dict[str, float]) -> str:
+    """Mole fractions (Cantera text) of a gas given by mass fractions."""
+    from rotarykiln.materials.gas import molar_mass
+
+    moles = {n: w / molar_mass(f"{n}:1") for n, w in mass_fractions.items() if w > 0}
+    total = sum(moles.values())
+    return ", ".join(f"{n}:{v / total:.12g}" for n, v in moles.items())
+
+
+def _wall(case) -> Wall:
+    """The :class:`Wall` branch: lining layers with the shell loss and heater zones, a
+    constant U, or a heating jacket."""
+    w = case.wall
+    common = dict(ambient_temperature=w.ambient_temperature, emissivity=w.emissivity)
+    if w.jacket is not None:  # the jacket is the wall model (kiln/wall/jacket.py)
+        return Wall(jacket=jacket_from_case(w.jacket), **common)
+    heaters = tuple(HeaterZone(z.start, z.end, z.power, z.shell_temperature) for z in w.heaters)
+    if w.lining is None:
+        return Wall(loss_u=w.U, heaters=heaters, **common)
+    return Wall(
+        layers=layers_from_case(w.lining, "wall"),
+        wind_speed=w.wind_speed,
+        shell_emissivity=w.shell_emissivity,
+        heaters=heaters,
+        **common,
+    )
+
+
+def jacket_from_case(section):
+    """The :class:`~rotarykiln.kiln.wall.jacket.Jacket` of a case file's ``wall.jacket`` section.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import Jacket as JacketSection
+    >>> j = jacket_from_case(JacketSection(flow="175 kg/h", temperature="560 degC",
+    ...                                    specific_heat="1226.9 J/kg/K"))
+    >>> round(j.mass_flow * 3600, 6), j.htc, j.counter_current
+    (175.0, 'annulus', False)
+    """
+    from rotarykiln.kiln.wall.jacket import Jacket
+
+    return Jacket(
+        section.flow,
+        section.temperature,
+        cp=section.specific_heat,
+        composition=section.composition,
+        counter_current=section.counter_current,
+        htc=section.heat_transfer,
+        gap=section.gap,
+        wall_thickness=section.wall_thickness,
+        wall_conductivity=section.wall_conductivity,
+        casing_u=section.casing_u,
+        casing_perimeter=section.casing_perimeter,
+        radiation=section.radiation,
+        eps_drum=section.drum_emissivity,
+        eps_casing=section.casing_emissivity,
+    )
+
+
+def burner_from_case(section, counter_current: bool = True) -> Burner:
+    """The :class:`~rotarykiln.kiln.combustion.flame.Burner` of a case file's ``burner`` section.
+
+    ``counter_current``: the gas direction; an air ingress at the feed end joins the burner's
+    air in a co-current kiln (the burner is at the feed end) and the exhaust otherwise.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import Burner as BurnerSection
+    >>> b = burner_from_case(BurnerSection(fuel="CH4:1", fuel_flow="2 kg/h",
+    ...                                    primary_air={"flow": "40 kg/h"}))
+    >>> round(b.fuel_flow * 3600, 6), round(b.air_flow * 3600, 6)
+    (2.0, 40.0)
+    """
+    fuel, primary, secondary = section.mass_flows()
+    t_p = section.primary_air.temperature if section.primary_air is not None else 298.15
+    t_s = section.secondary_air.temperature if section.secondary_air is not None else 298.15
+    return Burner(
+        fuel=section.fuel,
+        fuel_flow=fuel,
+        primary_air=AirStream(primary, t_p),
+        secondary_air=AirStream(secondary, t_s),
+        fuel_temperature=section.fuel_temperature,
+        nozzle_diameter=section.nozzle_diameter,
+        combustion=section.combustion,
+        flame_length=section.flame_length,
+        ingress_air=AirStream(
+            section.ingress_flow(),
+            section.air_ingress.temperature if section.air_ingress is not None else 298.15,
+        ),
+        ingress_at_burner=not counter_current,
+        products=section.products,
+        recirculation_length=section.recirculation_length,
+    )
+
+
+def mechanism_from_case(chem):
+    """The :class:`~rotarykiln.chemistry.Mechanism` of a ``chemistry`` section (built-in
+    names or user mappings, on the built-in species and the section's own ``species``);
+    reactions with a sharp onset temperature (``width`` 0) get ``chemistry.onset_width``."""
+    from rotarykiln.chemistry.mechanism import Mechanism
+    from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
+    from rotarykiln.chemistry.species import default_species, load_species
+
+    # the built-in species, with the case's own (chemistry.species) when it has some
+    sp = default_species() if chem.species is None else load_species(chem.species)
+    known = builtin_reactions(sp)
+    chosen = []
+    for i, item in enumerate(chem.reactions):
+        if isinstance(item, str):
+            r = known[item]
+        else:
+            r = reaction_from_dict(item, sp, where=f"chemistry.reactions[{i}]")
+        if chem.onset_width > 0 and r.params.get("width", None) == 0.0:
+            r = dataclasses.replace(r, params={**r.params, "width": float(chem.onset_width)})
+        chosen.append(r)
+    return Mechanism(tuple(chosen), sp, kirchhoff=chem.kirchhoff)
+
+
+def _library_name(name: str | None) -> str | None:
+    from rotarykiln.materials._library import load_library
+
+    return name if name in load_library("solids.yaml") else None
+
+
+def _library_solid(name: str | None):
+    from rotarykiln.materials.solids import load_solid
+
+    name = _library_name(name)
+    return load_solid(name) if name is not None else None
+
+
+def _bed_dispersion(case, kiln: Kiln) -> float:
+    """Axial dispersion coefficient of the bed (m2/s) of ``bed.axial_dispersion``: the
+    Sherritt et al. (2003) correlation (default), ``plug`` flow, or a given Peclet u L / D."""
+    from rotarykiln.rtd.correlations import sherritt_dispersion
+
+    choice = case.bed.axial_dispersion if case.bed is not None else "sherritt2003"
+    if choice == "plug":
+        return 0.0
+    if choice == "sherritt2003":
+        d = sherritt_dispersion(
+            kiln.drum.omega, 2.0 * kiln.drum.radius, kiln.bed.particle_diameter, kiln.mean_fill
+        )
+        return float(d)
+    return kiln.bed.velocity * kiln.drum.length / float(choice)
+
+
+def _kramers_bed(case, density):
+    """The :class:`KramersBed` of a ``transport:`` section, and the fill and solids speed of
+    its constant-flow profile (the solve's starting point)."""
+    from rotarykiln.commands.model_runs import bed_profile_from_case
+    from rotarykiln.kiln.bed.depth import KramersBed
+
+    t = case.transport
+    if t.model != "kramers" or t.weirs:
+        raise InputError(
+            "transport.model",
+            t.model if t.model != "kramers" else "kramers with weirs",
+            "kramers without weirs (the bed depth solved inside a reacting kiln)",
+        )
+    if t.dam_height is None:
+        raise InputError("transport.dam_height", None, "given (> 0) for a reacting kiln's bed")
+    if case.material.repose_angle is None:
+        raise InputError("material.repose_angle", None, "given with a transport: section")
+    bed = KramersBed(
+        case.kiln.diameter / 2.0,
+        case.operation.speed,
+        case.kiln.slope,
+        case.material.repose_angle,
+        density,
+        t.dam_height,
+    )
+    profile = bed_profile_from_case(case)
+    fill = float(np.mean(profile.fill))
+    velocity = case.kiln.length / float(profile.mean_residence_time)
+    return bed, fill, velocity
+
+
+def layers_from_case(lining, section: str = "wall") -> tuple[Layer, ...]:
+    """Lining layers of a case file's ``lining`` list (:class:`rotarykiln.case.LiningLayer`).
+
+    Raises :class:`~rotarykiln.errors.InputError` (``<section>.lining``) for an empty list.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import LiningLayer
+    >>> (layer,) = layers_from_case([LiningLayer(material="fireclay_brick", thickness="0.1 m")])
+    >>> layer.material.name, layer.thickness
+    ('fireclay_brick', 0.1)
+    """
+    from rotarykiln.materials.lining import LiningMaterial, load_lining_material
+
+    def material(spec):
+        if isinstance(spec, str):
+            return load_lining_material(spec)
+        return LiningMaterial(spec.name, tuple(spec.k), spec.emissivity, spec.t_max)
+
+    layers = tuple(
+        Layer(
+            material(layer.material),
+            layer.thickness,
+            absent=tuple(tuple(a) for a in layer.absent),
+        )
+        for layer in lining or ()
+    )
+    if not layers:
+        raise InputError(f"{section}.lining", "[]", "a list of at least one layer")
+    return layers

@@ -1,0 +1,431 @@
+"""Solve the kiln (energy + species) at once by Newton, with continuation fallbacks."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
+from rotarykiln.chemistry.ratelaws import MOISTURE
+from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln.accounting import energy_sheet, exhaust_state
+from rotarykiln.kiln.inputs import Kiln
+from rotarykiln.kiln.inputs.boundary import Scales
+from rotarykiln.kiln.residual import KilnResidual
+from rotarykiln.kiln.results.solution import KilnSolution
+from rotarykiln.kiln.steady import continuation as steady
+
+__all__ = ["solve_kiln", "ENERGY_RTOL", "zigzag"]
+
+#: Energy closure demanded of every reacting solve (issue 7).
+ENERGY_RTOL = 1e-6
+#: Floor of the finite-difference step of the scaled species unknowns (flow / inlet flow).
+SPECIES_STEP_FLOOR = 1e-6
+#: Bed temperature (K) above which the initial guess holds no liquid water (boiling drying).
+BOILING_GUESS = 373.15
+#: Rate-temperature continuation (the last fallback): the rates first see at most the feed
+#: temperature plus RATE_CAP_START, then up to the hottest source plus RATE_CAP_MARGIN, K.
+RATE_CAP_START = 50.0
+RATE_CAP_MARGIN = 200.0
+#: Grid sequencing (steady.newton_sequenced) for kilns with reactions, and for inert kilns
+#: above this many cells (below it the linear guess converges in ~7 Newton steps anyway).
+SEQUENCE_INERT_MIN = 200
+
+
+def _initial_guess(res: KilnResidual) -> np.ndarray:
+    k = res.kiln
+    t_b, t_g, t_wall = steady.initial_temperatures(
+        res.z_nodes, k.feed.temperature, res.hottest_source(), res.wall, k.gas.counter_current
+    )
+    i0 = res.i_species
+    x = np.empty((res.n, res.nv))
+    x[:, 0] = t_b
+    x[:, 1] = t_g
+    x[:, 2:i0] = t_wall
+    xb = res.bed_in[res.bed_pos] / res.bed_scale
+    x[:, i0 : i0 + res.nb] = np.where(res.sqrt_mask, np.sqrt(xb), xb)
+    if MOISTURE in res.bed_var and any(
+        r.law.name == "boiling_drying" for r in k.chemistry.mechanism.reactions
+    ):
+        # a bed held at its boiling point has no liquid water above it: start dry there
+        j = res.bed_var.index(MOISTURE)
+        hot = t_b > BOILING_GUESS
+        dry = 1e-4 * xb[j]
+        x[hot, i0 + j] = np.sqrt(dry) if res.sqrt_mask[j] else dry
+    x[:, i0 + res.nb : i0 + res.nb + res.ng] = res.gas_inlet[res.gas_pos] / res.gas_scale
+    if res.depth is not None:
+        x[:, res.i_depth] = res.depth.initial_depth(k.drum.length, res.z_nodes[:-1], k.feed_flow)
+    return x
+
+
+def solve_kiln(
+    kiln: Kiln,
+    n_cells: int = 100,
+    *,
+    tol: float = 1e-11,
+    max_iter: int = 60,
+    initial: np.ndarray | None = None,
+    check_balances: bool = True,
+) -> KilnSolution:
+    """Solve the steady energy and species balances of a kiln (inert or reacting).
+
+    Parameters
+    ----------
+    kiln : Kiln
+    n_cells : int
+        Number of equal cells (>= 4).
+    tol : float
+        Newton tolerance on ``max|R| / Q_ref`` (energy rows in W; species rows are flows over
+        the phase's inlet flow times ``Q_ref``).
+    max_iter : int
+    initial : array (n_cells, nv), optional
+        Initial guess (e.g. the unknowns of a neighbouring solution, ``solution.fluxes["x"]``).
+    check_balances : bool
+        Raise :class:`ConvergenceError` if the element balance exceeds 1e-8 or the energy
+        balance 1e-6 (relative).
+
+    Returns
+    -------
+    KilnSolution
+
+    Raises
+    ------
+    ConvergenceError
+        Newton fails after continuation in the reaction rates (and radiation); the message
+        names the cell (z) and equation with the largest residual. Also when a balance does
+        not close or a result is not finite.
+    """
+    if int(n_cells) != n_cells or n_cells < 4:
+        raise InputError("solver.cells", n_cells, "an integer >= 4")
+    res = KilnResidual(kiln, int(n_cells))
+    q_ref = res.q_ref
+    i0 = res.i_species
+    species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
+    if res.depth is not None:
+        species.append("bed depth (Kramers)")
+    where = steady.locator(res.z, steady.equation_names(res.wall, species))
+    floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
+    squared = np.zeros(res.nv, dtype=bool)
+    squared[i0 : i0 + res.nb] = res.sqrt_mask & _consumed_at_first_order(kiln, res.bed_var)
+    kw = dict(
+        tol=tol,
+        max_iter=max_iter,
+        temperature_vars=i0,
+        where=where,
+        step_floor=floor,
+        squared=squared,
+    )
+    if initial is None and (kiln.chemistry.mechanism.reactions or res.n > SEQUENCE_INERT_MIN):
+
+        def make_residual(n):
+            return KilnResidual(kiln, n, q_ref=q_ref)
+
+        x0 = _initial_guess(res)
+        x, total = steady.newton_sequenced(
+            res,
+            x0,
+            q_ref,
+            _continuation(res),
+            make_residual=make_residual,
+            continuation_of=_continuation,
+            **kw,
+        )
+    else:
+        x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
+        x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
+    R, fl, prod, rate, (tb_n, tg_n, qb, qg) = res.evaluate(x[None], full=True)
+    R, prod, rate = R[0], prod[0], rate[0]
+    tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
+    fl = {key: np.broadcast_to(v, (1, res.n))[0] * np.ones(res.n) for key, v in fl.items()}
+    steady.check_finite(
+        {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
+    )
+    _check_no_hotter_than_sources(res, tb_n, tg_n, x[:, 2:i0], total)
+    _check_within_partners(res, tb_n, tg_n, x[:, 2:i0], total)
+    _check_no_oscillation(res, {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2]}, total)
+    # validity ranges of the heat-transfer closures, checked once on the converged state
+    g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
+    geo = res.geometry(x)
+    res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True, geo=geo)
+    gas = res.gas_state(g_mean, geo)
+    fl["gas_velocity"] = gas.mass_flux / gas.density(fl["t_gas_mean"])  # m/s, cells
+    for solid in {id(s): s for s in kiln.bed.solids.values()}.values():
+        solid.check_range(tb_n)  # a library solid's c_p fit extrapolated: OutOfRangeWarning
+    # global balances
+    dz = res.dz
+    hb = res.bed_enthalpy(tb_n)
+    hg = res.mixture.species_enthalpy(tg_n)
+    release = float(np.sum(res.grid.heat_release) * dz)
+    heating = float(np.sum(fl.get("q_electric_heating", 0.0)) * dz)
+    gi, go = (-1, 0) if kiln.gas.counter_current else (0, -1)  # gas inlet and outlet faces
+    e_in = float(qb[0] @ hb[0] + qg[gi] @ hg[gi])
+    e_out = float(qb[-1] @ hb[-1] + qg[go] @ hg[go])
+    loss = float(np.sum(fl["q_shell_loss"]) * dz)
+    w_all = prod
+    h_all = np.zeros_like(prod)
+    h_all[:, res.bed_idx] = res.bed_enthalpy(fl["t_bed_mean"])
+    h_all[:, res.gas_idx] = res.mixture.species_enthalpy(fl["t_bed_mean"])
+    reaction_heat = float(np.sum(fl["q_reaction_absorbed"] - (w_all * h_all).sum(-1)) * dz)
+    heat_to_solids = float(qb[-1] @ hb[-1] - qb[0] @ hb[0])
+    denom = max(abs(heat_to_solids), abs(reaction_heat), 1.0)
+    closure = (e_in + release + heating - e_out - loss - reaction_heat) / denom
+    inlets = {s: float(qb[0, i]) for i, s in enumerate(res.bed_names)}
+    inlets.update({s: float(qg[gi, i]) for i, s in enumerate(res.gas_names)})
+    outlets = {s: float(max(qb[-1, i], 0.0)) for i, s in enumerate(res.bed_names)}
+    outlets.update({s: float(max(qg[go, i], 0.0)) for i, s in enumerate(res.gas_names)})
+    if check_balances:
+        elements = check_stream_balance(inlets, outlets, res.species, rtol=ELEMENT_RTOL)
+        if not abs(closure) <= ENERGY_RTOL:
+            raise ConvergenceError(
+                "energy balance of the reacting kiln does not close",
+                relative_closure=closure,
+                tolerance=ENERGY_RTOL,
+                iterations=total,
+            )
+    else:
+        from rotarykiln.chemistry.balance import element_flows
+
+        fin, fout = element_flows(inlets, res.species), element_flows(outlets, res.species)
+        elements = {e: abs(fin[e] - fout[e]) / max(abs(fin[e]), abs(fout[e]), 1e-300) for e in fin}
+    fl["x"] = x.copy()
+    exhaust, ingress_in = exhaust_state(res, qg[go], float(tg_n[go]))
+    sheet = energy_sheet(
+        kiln,
+        solids_in=float(qb[0] @ hb[0]),
+        to_solids=heat_to_solids,
+        reaction_heat=reaction_heat,
+        gas_in=float(qg[gi] @ hg[gi]),
+        exhaust=float(qg[go] @ hg[go]) + ingress_in,
+        shell_loss=loss,
+        release=release,
+        heating=heating,
+        ingress=ingress_in,
+    )
+    return KilnSolution(
+        name=kiln.name,
+        **steady.profile_fields(res.grid, tb_n, tg_n, x[:, 2:i0], fl, R, q_ref, total),
+        bed_flows={s: np.maximum(qb[:, i], 0.0) for i, s in enumerate(res.bed_names)},
+        gas_flows={s: np.maximum(qg[:, i], 0.0) for i, s in enumerate(res.gas_names)},
+        reaction_rates={r: rate[:, i].copy() for i, r in enumerate(kiln.chemistry.mechanism.names)},
+        energy_in=e_in,
+        energy_out=e_out,
+        shell_loss=loss,
+        reaction_heat=reaction_heat,
+        heat_to_solids=heat_to_solids,
+        energy_closure=float(closure),
+        element_closure={e: float(v) for e, v in elements.items()},
+        residence_time=_residence_time(res, geo, qb),
+        fill=float(np.mean(geo.fill)),
+        feed=dict(kiln.feed.flows),
+        counter_current=kiln.gas.counter_current,
+        heat_release=release,
+        energy_sheet=sheet,
+        burner=kiln.firing.flame.summary() if kiln.firing.flame is not None else {},
+        measurements=kiln.measurements,
+        fill_profile=res.geometry(x).fill * np.ones(res.n),
+        exhaust=exhaust,
+    )
+
+
+def _consumed_at_first_order(kiln: Kiln, species) -> np.ndarray:
+    """For each bed species: is every reaction that consumes it of order >= 1 in its flow?
+
+    Those reactants are solved for as the square root of their flow (positive flows), but
+    stepped by Newton in the flow itself: near complete conversion a first-order consumption
+    is linear in the flow, while in its square root the solution is a double root that Newton
+    only halves per iteration (the shrinking-core order 1/2 is linear in the square root, and
+    keeps its steps there).
+    """
+    out = []
+    for s in species:
+        orders = [
+            r.law.flow_order(r.params) for r in kiln.chemistry.mechanism.reactions if r.basis == s
+        ]
+        out.append(bool(orders) and min(orders) >= 1.0)
+    return np.array(out, dtype=bool)
+
+
+def _check_no_hotter_than_sources(res: KilnResidual, tb_n, tg_n, t_wall, iterations) -> None:
+    """Refuse a solution hotter than every heat source it has (ConvergenceError).
+
+    Without exothermic reactions the hottest a kiln can be is its hottest inlet (gas, solids,
+    ambient, a heater set-point); a face above that by more than 1 K is a discretisation
+    artefact (an under-resolved front), never physics. Not checked with exothermic chemistry,
+    heat released along a flame or heaters of given power.
+    """
+    k = res.kiln
+    if any(r.heat < 0 for r in k.chemistry.mechanism.reactions):
+        return  # exothermic chemistry: the bound is an adiabatic temperature, not checked here
+    if any(z.power is not None for z in k.wall.heaters):
+        return  # a heater of given power has no temperature bound
+    if k.firing.heat_release > 0:
+        return  # heat released inside: a counter-current kiln recuperates heat into the
+        # unburnt gas (super-adiabatic temperatures are physical there), no simple bound
+    set_points = [z.shell_temperature for z in k.wall.heaters]
+    bound = max(k.gas.temperature, k.feed.temperature, k.wall.ambient_temperature, *set_points)
+    bound = max(bound, res.hottest_source()) + 1.0
+    for name, arr in (("T_bed", tb_n), ("T_gas", tg_n), ("T_wall", t_wall)):
+        arr = np.asarray(arr)
+        if np.any(arr > bound):
+            flat = int(np.argmax(arr.max(axis=-1) if arr.ndim > 1 else arr))
+            raise ConvergenceError(
+                f"unphysical solution: {name} reaches {float(arr.max()):.6g} K, above every "
+                f"heat source ({bound - 1.0:.6g} K), near z = {res.z_nodes[min(flat, res.n)]:.4g} m;"
+                " refine the grid (cells)",
+                iterations=iterations,
+            )
+
+
+def _temperature_tolerance(*arrays) -> float:
+    """Slack of the bound checks, K: 1 K plus 0.1 % of the hottest temperature (the cells'
+    means and faces are not exactly what the closures saw)."""
+    hottest = max(float(np.max(a)) for a in arrays if np.size(a))
+    return 1.0 + 1e-3 * hottest
+
+
+def _check_within_partners(res: KilnResidual, tb_n, tg_n, t_wall, iterations) -> None:
+    """Refuse a phase hotter (colder) than everything it exchanges heat with (ConvergenceError).
+
+    Heat flows from hot to cold: a phase without a heat source of its own cannot become hotter
+    than the hottest temperature it exchanges with anywhere in the kiln, nor colder than the
+    coldest. The gas exchanges with the wall and the bed, takes the bed's volatiles at the bed
+    temperature, and enters at its inlet (air ingress at ambient); the wall (lining, shell,
+    jacket gas) with the gas, the bed, the ambient, a jacket's inlet and heater set-points; the
+    bed with the gas, the wall and its feed. Sources that lift the bound: heat released in the
+    gas (a flame) or gas-phase reactions for the gas, heaters of given power for the wall,
+    exothermic bed reactions for the bed (and endothermic ones below). This check holds with
+    exothermic chemistry, where the bound on the hottest source does not apply: a gas hotter
+    than both the wall and the bed it lies between is never physics.
+    """
+    k = res.kiln
+    reactions = list(k.chemistry.mechanism.reactions)
+    gas_sources = k.firing.heat_release > 0 or any(r.phase == "gas" for r in reactions)
+    bed_exo = any(r.phase != "gas" and r.heat < 0 for r in reactions)
+    bed_endo = any(r.phase != "gas" and r.heat > 0 for r in reactions)
+    powered = any(z.power is not None for z in k.wall.heaters)
+    jacket = k.wall.jacket
+    outside = [k.wall.ambient_temperature, *(z.shell_temperature for z in k.wall.heaters)]
+    outside = [t for t in outside if t is not None]
+    if jacket is not None:
+        outside.append(float(jacket.inlet_temperature))
+    t_wall = np.asarray(t_wall).reshape(res.n, -1)
+    inner = t_wall[:, 0]
+    gas_in = [k.gas.temperature, k.wall.ambient_temperature]
+    checks = []  # (name, values, partners' hottest, coldest, check hot, check cold)
+    partners = [np.asarray(gas_in), inner, tb_n]
+    if not gas_sources:
+        checks.append(("T_gas", tg_n, partners, True, True))
+    checks.append(("T_wall", t_wall, [tg_n, tb_n, np.asarray(outside)], not powered, True))
+    bed_partners = [np.asarray([k.feed.temperature]), tg_n, inner]
+    checks.append(("T_bed", tb_n, bed_partners, not bed_exo, not bed_endo))
+    tol = _temperature_tolerance(tb_n, tg_n, t_wall)
+    for name, values, around, hot, cold in checks:
+        values = np.asarray(values, dtype=float)
+        top = max(float(np.max(a)) for a in around)
+        low = min(float(np.min(a)) for a in around)
+        per_cell = values.reshape(values.shape[0], -1)
+        for check, worst, beyond, word, bound in (
+            (hot, per_cell.max(-1), lambda v, b=top: v > b + tol, "hotter", top),
+            (cold, per_cell.min(-1), lambda v, b=low: v < b - tol, "colder", low),
+        ):
+            if not check or not np.any(beyond(worst)):
+                continue
+            j = int(np.argmax(worst) if word == "hotter" else np.argmin(worst))
+            z = res.z_nodes[j] if values.shape[0] == res.n + 1 else res.z[j]
+            raise ConvergenceError(
+                f"unphysical solution (bound check): {name} reaches {float(worst[j]):.6g} K at "
+                f"z = {z:.4g} m, {word} than everything it exchanges heat with "
+                f"({bound:.6g} K); refine the grid (solver.cells)",
+                iterations=iterations,
+            )
+
+
+#: A profile zigzagging cell to cell (each difference against the sign of the previous one,
+#: each larger than the amplitude) over this many successive nodes is a failed solve.
+ZIGZAG_NODES = 4
+#: Amplitude of a zigzag: at least this many K and this share of the profile's span. Below it
+#: a ripple is tolerated: a stiff equilibrium reaction that pins the bed's cell means (pure
+#: CaCO3 under pure CO2 at 1,175 K) leaves its faces rippling by a few K around them.
+ZIGZAG_AMPLITUDE = 2.0
+ZIGZAG_SPAN_SHARE = 0.02
+
+
+def zigzag(values, amplitude: float) -> tuple[int, int]:
+    """Longest run of successive interior nodes where a profile turns back (the differences on
+    either side of opposite signs, both larger than ``amplitude``): (length, first node).
+
+    Examples
+    --------
+    >>> zigzag([1.0, 9.0, 2.0, 8.0, 3.0, 7.0, 7.5, 8.0], 1.0)
+    (4, 1)
+    >>> zigzag([1.0, 2.0, 3.0, 2.5, 2.0], 1.0)
+    (0, 0)
+    """
+    d = np.diff(np.asarray(values, dtype=float))
+    turn = (d[:-1] * d[1:] < 0.0) & (np.abs(d[:-1]) > amplitude) & (np.abs(d[1:]) > amplitude)
+    best, start, run = 0, 0, 0
+    for i, t in enumerate(turn):
+        run = run + 1 if t else 0
+        if run > best:
+            best, start = run, i - run + 2
+    return best, start
+
+
+def _check_no_oscillation(res: KilnResidual, profiles: dict, iterations) -> None:
+    """Refuse a profile that oscillates from cell to cell (ConvergenceError): a sign of a grid
+    too coarse for the exchange it resolves (e.g. a cell of more transfer units than the scheme
+    bounds), never of physics; the message names the profile, the cells and z."""
+    for name, values in profiles.items():
+        values = np.asarray(values, dtype=float)
+        amplitude = max(ZIGZAG_AMPLITUDE, ZIGZAG_SPAN_SHARE * float(np.ptp(values)))
+        length, first = zigzag(values, amplitude)
+        if length >= ZIGZAG_NODES:
+            z = res.z_nodes if values.size == res.n + 1 else res.z
+            raise ConvergenceError(
+                f"unphysical solution (oscillation check): {name} zigzags cell to cell over "
+                f"{length} nodes from z = {z[first]:.4g} m (amplitude above {amplitude:.3g} K); "
+                "refine the grid (solver.cells)",
+                iterations=iterations,
+            )
+
+
+def _residence_time(res: KilnResidual, geo, qb) -> float:
+    r"""Mean solids residence time, s: the kiln's L/v, or with the bed depth solved the integral
+    of hold-up over local mass flow, :math:`\int \rho_b A_{bed}/\dot m\,dz`."""
+    k = res.kiln
+    if res.depth is None:
+        return k.residence_time
+    m = np.maximum(0.5 * (qb[1:].sum(-1) + qb[:-1].sum(-1)), 1e-300)
+    return float(np.sum(k.bed.bulk_density * geo.bed_area / m) * res.dz)
+
+
+def _continuation(res: KilnResidual):
+    """Reaction rates off (with radiation and the heat release ramped 0 -> 1 if needed), then
+    the rates ramped 0 -> 1 in adaptive steps; if that fails, the full rates with the
+    temperature they see ramped from just above the feed to the hottest source. Each stage
+    solves the residual at its :class:`~rotarykiln.kiln.inputs.boundary.Scales`."""
+    t_low = res.kiln.feed.temperature + RATE_CAP_START
+    t_high = res.hottest_source() + RATE_CAP_MARGIN
+    radiation_ramp = steady.ramp(lambda v: Scales(reaction=0.0, radiation=v, release=v))
+    reactions = steady.ramp(lambda v: Scales(reaction=v), adaptive=True)
+
+    def capped(value):
+        cap = np.inf if value >= 1.0 else t_low + value * (t_high - t_low)
+        return Scales(rate_temperature_cap=cap)
+
+    temperatures = steady.ramp(capped, adaptive=True)
+
+    def run(F, x0, scale, kw):
+        off = steady.scaled(F, Scales(reaction=0.0))
+        x, total = steady.newton_with_continuation(
+            off, x0, scale, lambda _, x, s, k: radiation_ramp(F, x, s, k), **kw
+        )
+        try:
+            x_r, more = reactions(F, x, scale, kw)
+        except ConvergenceError:
+            # a kiln hot enough to react at once where the reaction-free bed is hottest: ramp
+            # instead the temperature the rates see, from just above the feed to the hottest
+            # source, with the full rates (each stage heats the bed a little further)
+            x_r, more = temperatures(F, x, scale, kw)
+        return x_r, total + more
+
+    return run

@@ -1,0 +1,235 @@
+"""The steady kiln solver on inert kilns: balance closure, mesh check, options, bad input."""
+
+import warnings
+
+import matplotlib
+import numpy as np
+import pytest
+
+from rotarykiln.case import load_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln import Closures, solve_kiln
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.materials.lining import Layer, load_lining_material
+
+matplotlib.use("Agg")
+
+CLOSURE_TOL = 1e-6  # issue 6: the balance must close to 1e-6 of the heat to the solids
+
+
+def _finite(sol):
+    arrays = [sol.t_gas_nodes, sol.t_bed_nodes, sol.t_wall, sol.t_shell, sol.t_lining]
+    arrays += [np.asarray(v) for v in sol.fluxes.values()]
+    return all(np.all(np.isfinite(a)) for a in arrays)
+
+
+@pytest.fixture(scope="module")
+def flame_kiln():
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("ubc_pilot_flame")))
+    return kiln
+
+
+def _tscheng_a16(closures=None):
+    """Tscheng's run A16 as its built-in case builds it (the kiln users run)."""
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    return kiln if closures is None else kiln.replace(closures=closures)
+
+
+def test_tscheng_run_closes_and_converges():
+    sol = solve_kiln(_tscheng_a16())
+    assert abs(sol.energy_closure) < CLOSURE_TOL
+    assert sol.residual < 1e-9 and 1 <= sol.iterations < 20
+    assert _finite(sol)
+    # counter-current: gas enters hot at z = L, bed leaves hotter than it entered
+    assert sol.t_gas_nodes[-1] == pytest.approx(535.0)
+    assert sol.t_bed_nodes[0] == pytest.approx(298.15)
+    assert sol.bed_outlet_temperature > 400.0
+    assert sol.gas_outlet_temperature < 535.0
+
+
+def test_flame_case_radiation_share(flame_kiln):
+    on = solve_kiln(flame_kiln)
+    off = solve_kiln(flame_kiln.replace(closures__radiation=False))
+    for sol in (on, off):
+        assert abs(sol.energy_closure) < CLOSURE_TOL
+        assert _finite(sol)
+    dz = on.z[1] - on.z[0]
+    rad_to_bed = np.sum(on.fluxes["q_rad_to_bed"]) * dz
+    assert rad_to_bed > 0.1 * on.heat_to_solids  # radiation is a major path in a flame kiln
+    assert np.all(off.fluxes["q_rad_to_bed"] == 0.0)
+    assert on.fluxes["eps_gas"].max() > 0.05  # CO2/H2O products participate
+    # the released heat is the same; radiation moves heat from the gas to the bed and wall
+    assert on.heat_release == pytest.approx(off.heat_release, rel=1e-12)
+    assert on.gas_outlet_temperature < off.gas_outlet_temperature
+
+
+@pytest.mark.parametrize(("which", "cells", "tol"), [("tscheng", 100, 1.0), ("flame", 200, 2.0)])
+def test_mesh_doubling_below_tolerance(which, cells, tol, flame_kiln):
+    # the fired kiln enters at its adiabatic flame temperature (1873 K here, hotter than
+    # Barr's 826-1090 K): the steepest gradients are at the burner, where doubling 100 cells
+    # moves the wall by 2.0 K and doubling 200 by 1.5 K (issue 10 asks < 2 K, for Barr's
+    # profiles at 100 cells: tests/validation/test_heat_barr.py)
+    kiln = _tscheng_a16() if which == "tscheng" else flame_kiln
+    a = solve_kiln(kiln, cells)
+    b = solve_kiln(kiln, 2 * cells)
+    for x, y in ((a.t_gas_nodes, b.t_gas_nodes[::2]), (a.t_bed_nodes, b.t_bed_nodes[::2])):
+        assert np.max(np.abs(x - y)) < tol
+    assert np.max(np.abs(a.t_wall - 0.5 * (b.t_wall[::2] + b.t_wall[1::2]))) < tol
+
+
+def test_co_current():
+    kiln = _tscheng_a16().replace(gas__counter_current=False)
+    sol = solve_kiln(kiln)
+    assert abs(sol.energy_closure) < CLOSURE_TOL
+    assert sol.t_gas_nodes[0] == pytest.approx(535.0)
+    # co-current: the gas stays hotter than the bed and the two approach each other along z
+    gap = sol.t_gas_nodes - sol.t_bed_nodes
+    assert np.all(gap > 0) and gap[-1] < 0.2 * gap[0]
+
+
+def test_fill_as_array_callable_pair_equivalent():
+    base = _tscheng_a16()
+    ref = solve_kiln(base)
+    for fill in (np.full(7, 0.17), lambda z: 0.17 + 0 * z, (np.array([0.0, 2.44]), [0.17, 0.17])):
+        sol = solve_kiln(base.replace(bed__fill=fill))
+        assert np.allclose(sol.t_bed_nodes, ref.t_bed_nodes, atol=1e-8)
+    # a varying fill changes the answer and still closes
+    sol = solve_kiln(base.replace(bed__fill=lambda z: 0.10 + 0.05 * z / 2.44))
+    assert abs(sol.energy_closure) < CLOSURE_TOL
+    assert sol.fill_profile[0] < sol.fill_profile[-1]
+
+
+@pytest.mark.parametrize(
+    "closures",
+    [
+        Closures(gas_wall="gorog1982", gas_bed="gorog1982"),
+        Closures(covered_wall="tscheng1979", bed_conductivity="maxwell"),
+        Closures(covered_wall="wachters_kramers1964", bed_conductivity="zehner_schlunder"),
+    ],
+)
+def test_alternative_closures_close(closures):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sol = solve_kiln(_tscheng_a16(closures))
+    assert abs(sol.energy_closure) < CLOSURE_TOL
+
+
+def test_unconverged_raises_with_location():
+    with pytest.raises(ConvergenceError, match=r"cell \d+ \(z = .* m\)") as info:
+        solve_kiln(_tscheng_a16(), max_iter=1, tol=1e-30)
+    assert info.value.diagnostics["iterations"] >= 1
+    assert "residual" in info.value.diagnostics
+
+
+def test_bad_inputs():
+    base = _tscheng_a16()
+    case = load_case(builtin_case_path("tscheng_A16"))
+    with pytest.raises(InputError, match="gas.flow"):
+        kiln_from_case(case.replace({"gas.flow": "0 kg/h"}))
+    with pytest.raises(InputError, match="operation.feed"):
+        kiln_from_case(case.replace({"operation.feed": "-1 kg/h"}))
+    with pytest.raises(InputError, match="wall.emissivity"):
+        base.replace(wall__emissivity=1.5)
+    with pytest.raises(InputError, match="shell_emissivity"):
+        base.replace(wall__shell_emissivity=0.0)
+    with pytest.raises(InputError, match="thickness"):
+        base.replace(wall__layers=(Layer(load_lining_material("carbon_steel"), 0.0),))
+    with pytest.raises(InputError, match="closures.gas_wall"):
+        Closures(gas_wall="nusselt")
+    with pytest.raises(InputError, match="fill"):
+        solve_kiln(base.replace(bed__fill=0.0))
+    with pytest.raises(InputError, match="cells"):
+        solve_kiln(base, 2)
+    with pytest.warns(UserWarning, match="colder than the solids feed"):
+        base.replace(gas__temperature=280.0)
+
+
+def test_results_frame_and_plot():
+    sol = solve_kiln(_tscheng_a16())
+    df = sol.to_frame()
+    assert len(df) == len(sol.z_nodes)
+    for col in ("z_m", "T_gas_K", "T_bed_K", "T_wall_K", "T_shell_K", "q_shell_loss_W_m"):
+        assert col in df
+    assert df.notna().all().all()
+    ax = sol.plot().axes[0]
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "bed, measured" in labels and "gas, measured" in labels
+    s = sol.summary()
+    assert 0 < s["thermal_efficiency"] < 1
+
+
+def test_continuation_used_when_newton_fails(monkeypatch, flame_kiln):
+    import rotarykiln.kiln.steady.newton as newton_mod
+
+    real = newton_mod.newton_banded
+    calls = []
+
+    def flaky(F, x0, scale, **kw):
+        # the residual itself at full scales, or a stage of the continuation at its scales
+        scales = getattr(F, "keywords", {}).get("scales")
+        calls.append(1.0 if scales is None else scales.radiation)
+        if len(calls) <= 2:
+            raise ConvergenceError("forced failure", iterations=0)
+        return real(F, x0, scale, **kw)
+
+    monkeypatch.setattr(newton_mod, "newton_banded", flaky)
+    sol = solve_kiln(flame_kiln)
+    # full Newton fails, then radiation (and heat release) are ramped in from 0
+    assert calls[:4] == [1.0, 1.0, 0.0, 0.25] and calls[-1] == 1.0
+    assert abs(sol.energy_closure) < CLOSURE_TOL
+    ref = solve_kiln(flame_kiln)
+    assert np.max(np.abs(sol.t_bed_nodes - ref.t_bed_nodes)) < 1e-6
+
+
+def test_convection_factor_scales_the_gas_coefficients():
+    base = solve_kiln(_tscheng_a16())
+    k = _tscheng_a16(Closures(convection_factor=2.0))
+    sol = solve_kiln(k)
+    assert np.allclose(sol.fluxes["h_gb"], 2.0 * base.fluxes["h_gb"], rtol=0.05)
+    assert sol.bed_outlet_temperature > base.bed_outlet_temperature
+    assert abs(sol.energy_closure) < CLOSURE_TOL
+
+
+def test_a_solution_hotter_than_every_source_is_refused():
+    from rotarykiln.kiln.residual import KilnResidual
+    from rotarykiln.kiln.steady.solve import _check_no_hotter_than_sources
+
+    kiln = _tscheng_a16()
+    res = KilnResidual(kiln, 10)
+    ok = np.full(11, 400.0)
+    _check_no_hotter_than_sources(res, ok, ok, np.full((10, 4), 400.0), 3)
+    hot = ok.copy()
+    hot[4] = kiln.gas.temperature + 50.0  # an overshooting face
+    with pytest.raises(ConvergenceError, match="unphysical solution: T_bed"):
+        _check_no_hotter_than_sources(res, hot, ok, np.full((10, 4), 400.0), 3)
+
+
+def test_a_kiln_hot_enough_to_react_at_once_converges(monkeypatch):
+    # a 1099 K flue-gas jacket over 11.9 kg/h of wood (counter-current jacket, plug flow):
+    # the reaction-free bed is so hot at the end that ramping the rates from 0 fails; the
+    # solver then ramps the temperature the rates see (found by a random campaign)
+    import yaml
+
+    from rotarykiln.case import parse_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.steady import solve as solve_mod
+
+    d = yaml.safe_load(builtin_case_path("rotary_pyrolysis").read_text())
+    d["wall"]["jacket"].update(temperature="1099 K", counter_current=True)
+    d["operation"]["feed"] = "11.9 kg/h"
+    kiln, _ = kiln_from_case(parse_case(d))
+    capped = []
+    real_capped = solve_mod.KilnResidual.rates
+
+    def spy(self, *args, **kw):
+        capped.append(np.isfinite(kw["scales"].rate_temperature_cap))
+        return real_capped(self, *args, **kw)
+
+    monkeypatch.setattr(solve_mod.KilnResidual, "rates", spy)
+    sol = solve_kiln(kiln, 200)
+    assert any(capped)  # the rate-temperature continuation was used ...
+    assert abs(sol.energy_closure) < 1e-6  # ... and the converged solve is uncapped
+    assert max(sol.element_closure.values()) < 1e-8
+    assert sol.summary()["conversion_wood"] > 0.999
