@@ -21,8 +21,8 @@ from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.examples import example_path
 from rotarykiln.kiln.from_case import kiln_from_case
-from rotarykiln.kiln.transient.events import parse_transient, read_transient_file
 from rotarykiln.kiln.transient.integrate import TransientKiln, simulate
+from rotarykiln.transient_file import parse_transient, read_transient_file
 
 SPEC = {
     "wall": {

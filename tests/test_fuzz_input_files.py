@@ -182,7 +182,7 @@ def barr_kiln():
 def read_file(kind: str, path: Path, kiln=None):
     """Read (and check) the file ``path`` of ``kind`` as the program does; its result."""
     if kind == "events":
-        from rotarykiln.kiln.transient.events import parse_transient, read_transient_file
+        from rotarykiln.transient_file import parse_transient, read_transient_file
 
         return parse_transient(read_transient_file(path), kiln, EVENTS_UNTIL)
     if kind == "species":

@@ -164,10 +164,13 @@ def _kiln_solution():
 
 
 def _residence():
+    from rotarykiln.commands.kiln_runs import bed_peclet
     from rotarykiln.kiln.bed.residence import residence_time_effects
 
     case, kiln, sol = _kiln("limestone_calcination")
-    return residence_time_effects(case, kiln, sol, n_tau=6)
+    return residence_time_effects(
+        kiln, sol, n_tau=6, peclet=bed_peclet(case, sol.residence_time)[0]
+    )
 
 
 def _sweep():
@@ -289,7 +292,7 @@ def test_every_plot_returns_a_figure(name):
     try:
         assert isinstance(fig, Figure)
         assert fig.axes
-        # the line run_files.py keeps for an Axes or a Figure
+        # the line outputs.write_solution_files keeps for an Axes or a Figure
         assert getattr(fig, "figure", fig) is fig
     finally:
         plt.close(fig)

@@ -267,7 +267,7 @@ def test_the_gap_between_LHV_and_combustion_heat_is_explained(barr_t4):
     gap = summary["kiln_energy_fuel_lhv_input_W"] - summary["kiln_energy_combustion_heat_W"]
     assert gap > 0
     assert "NO" in report.text["energy"] and format_power(gap) in report.text["energy"]
-    products = kiln_from_case(load_case(builtin_case_path("barr_T4")))[0].flame.products
+    products = kiln_from_case(load_case(builtin_case_path("barr_T4")))[0].firing.flame.products
     gas = ct.Solution("gri30.yaml")
     x = dict(products.composition)
     moles = products.mass_flow / sum(x[s] * gas.molecular_weights[gas.species_index(s)] for s in x)

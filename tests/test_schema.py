@@ -6,7 +6,8 @@ import jsonschema
 import pytest
 import yaml
 
-from rotarykiln.case_io import case_json_schema, shipped_schema_path
+from rotarykiln.case import case_json_schema
+from rotarykiln.case_io import shipped_schema_path
 from rotarykiln.cases import builtin_case_path, list_builtin_cases
 from rotarykiln.cli import main
 

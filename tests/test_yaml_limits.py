@@ -16,7 +16,7 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.reaction import load_reactions
 from rotarykiln.chemistry.species import load_species
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.transient.events import read_transient_file
+from rotarykiln.transient_file import read_transient_file
 from rotarykiln.yaml_limits import MAX_YAML_BYTES, load_yaml_text, read_yaml_file
 
 BASE = yaml.safe_load(Path(builtin_case_path("limestone_calcination")).read_text())

@@ -13,11 +13,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.special import gamma  # noqa: E402
 
+from rotarykiln.cases import builtin_case  # noqa: E402
 from rotarykiln.chemistry.calcination import (  # noqa: E402
     baker_co2_equilibrium_pressure,
     garcia_labiano_co2_equilibrium_pressure,
 )
-from rotarykiln.cases import builtin_case  # noqa: E402
 from rotarykiln.chemistry.mechanism import Mechanism  # noqa: E402
 from rotarykiln.chemistry.plugflow import integrate_plug_flow  # noqa: E402
 from rotarykiln.chemistry.segregated import kiln_segregated_conversion  # noqa: E402

@@ -4,8 +4,8 @@ species files and reaction files.
 The mutations are those of tests/test_fuzz_input_files.py (a value of a shipped file replaced
 or deleted, or its text damaged: a line deleted or repeated, a character inserted, the file cut
 short, a Latin-1 byte), at scale: each mutated file is written to disk and read as the program
-reads it (events: :func:`rotarykiln.kiln.transient.events.read_transient_file` and
-:func:`~rotarykiln.kiln.transient.events.parse_transient` against the barr_T4 kiln; species:
+reads it (events: :func:`rotarykiln.transient_file.read_transient_file` and
+:func:`~rotarykiln.transient_file.parse_transient` against the barr_T4 kiln; species:
 :func:`rotarykiln.chemistry.species.load_species`; reactions:
 :func:`rotarykiln.chemistry.reaction.load_reactions`), in worker processes with an
 address-space limit (out-of-memory shows as MemoryError) and a per-item alarm.

@@ -4,6 +4,7 @@ Run from the repository root:  PYTHONPATH=src python docs/scripts/heat_figures.p
 Writes docs/figures/heat_*.png and prints the markdown table of the 44 Tscheng runs.
 """
 
+import sys
 import warnings
 from pathlib import Path
 
@@ -17,12 +18,11 @@ from rotarykiln.case import load_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
 from rotarykiln.kiln import solve_kiln  # noqa: E402
 from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
-from rotarykiln.kiln.tscheng import (  # noqa: E402
-    Z_GAS_BED,
-    load_tscheng_runs,
-    score_run,
-    tscheng_kiln,
-)
+from rotarykiln.studies.tscheng1978 import tscheng_runs  # noqa: E402
+
+# the scoring of the validation test: each run is its built-in case (tests/validation/)
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "validation"))
+from tscheng_scoring import WINDOW, score, solve_run  # noqa: E402
 
 OUT = Path("docs/figures")
 warnings.simplefilter("ignore")
@@ -31,26 +31,26 @@ warnings.simplefilter("ignore")
 def main():
     OUT.mkdir(parents=True, exist_ok=True)
     # 1. one run with its measurements
-    sol = solve_kiln(tscheng_kiln("A16"))
+    sol = solve_run("A16")
     fig = sol.plot()
-    fig.axes[0].axvspan(1.25, 1.78, color="0.9", zorder=0)
+    fig.axes[0].axvspan(*WINDOW, color="0.9", zorder=0)
     fig.savefig(OUT / "kiln_tscheng_A16.png", dpi=90, bbox_inches="tight")
     plt.close(fig)
 
     # 2. parity of all 44 runs, and the per-run table
     fig, axes = plt.subplots(1, 2, figsize=(9, 4.2))
     rows = []
-    win = (Z_GAS_BED >= 1.25) & (Z_GAS_BED <= 1.78)
-    for run in load_tscheng_runs().index:
-        s = solve_kiln(tscheng_kiln(run))
+    for run in tscheng_runs().index:
+        s = solve_run(run)
         m = s.measurements
-        sc = score_run(run, s)
-        rows.append(sc)
+        z = m["z_bed"]  # bed and gas are read at the same positions
+        win = (z >= WINDOW[0] - 1e-9) & (z <= WINDOW[1] + 1e-9)
+        rows.append(score(run, s))
         for ax, key, fn in (
             (axes[0], "bed", s.bed_temperature_at),
             (axes[1], "gas", s.gas_temperature_at),
         ):
-            pred = fn(Z_GAS_BED)
+            pred = fn(z)
             ax.plot(m[f"t_{key}"][~win], pred[~win], "o", mfc="none", color="0.6", ms=4)
             ax.plot(m[f"t_{key}"][win], pred[win], "o", color="tab:red", ms=4)
     for ax, key in zip(axes, ("bed", "gas"), strict=True):

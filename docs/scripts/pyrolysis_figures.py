@@ -1,7 +1,8 @@
 """Figures of docs/pyrolysis.md: run ``PYTHONPATH=src python docs/scripts/pyrolysis_figures.py``.
 
-The rotaryPyrolysis default case, ours (solid lines) over the anchor script's profiles (dots):
-plug flow, and the RTD (ours: axial dispersion at Pe 5 inside the balances; the script: 41
+The rotaryPyrolysis default case (cases/rotary_pyrolysis.yaml), ours (solid lines) over the
+anchor script's profiles (dots): plug flow (the override ``bed.axial_dispersion: plug``), and the
+RTD (ours: the case as given, axial dispersion at Pe 5 inside the balances; the script: 41
 segregated classes at one bed temperature).
 """
 
@@ -17,8 +18,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
+from rotarykiln.case import load_case  # noqa: E402
+from rotarykiln.cases import builtin_case_path  # noqa: E402
 from rotarykiln.errors import OutOfRangeWarning  # noqa: E402
-from rotarykiln.kiln.pyrolysis import rotary_pyrolysis_kiln  # noqa: E402
+from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
 from rotarykiln.kiln.steady.solve import solve_kiln  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "figures"
@@ -30,14 +33,15 @@ ANCHOR = pd.read_csv(
 def main():
     warnings.simplefilter("ignore", OutOfRangeWarning)
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
-    for col, (case, dispersion, title) in enumerate(
+    pyrolysis = load_case(builtin_case_path("rotary_pyrolysis"))
+    for col, (case, changes, title) in enumerate(
         (
-            ("plug_flow_nt1", False, "plug flow"),
-            ("adm_Pe5_nt40", True, "RTD, Pe 5 (ours: dispersion in the balances)"),
+            ("plug_flow_nt1", {"bed.axial_dispersion": "plug"}, "plug flow"),
+            ("adm_Pe5_nt40", {}, "RTD, Pe 5 (ours: dispersion in the balances)"),
         )
     ):
-        kiln = rotary_pyrolysis_kiln(dispersion=dispersion)
-        sol = solve_kiln(kiln, 100)
+        kiln, cells = kiln_from_case(pyrolysis.replace(changes))
+        sol = solve_kiln(kiln, cells)
         ref = ANCHOR[ANCHOR["case"] == case]
         jacket = sol.fluxes["x"][:, 3]
         ax = axes[0, col]

@@ -14,6 +14,7 @@ import yaml  # noqa: E402
 
 from rotarykiln.case import parse_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
+from rotarykiln.commands.kiln_runs import bed_peclet  # noqa: E402
 from rotarykiln.kiln.bed.residence import residence_time_effects  # noqa: E402
 from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
 from rotarykiln.kiln.steady.solve import solve_kiln  # noqa: E402
@@ -42,7 +43,7 @@ for name in ("charcoal_activation", "limestone_calcination"):
     print(name)
     for k, v in sol.summary().items():
         print(f"  {k}: {v}")
-    rtd = residence_time_effects(case, kiln, sol)
+    rtd = residence_time_effects(kiln, sol, peclet=bed_peclet(case, sol.residence_time)[0])
     print("  ", rtd.summary())
     fig = rtd.plot()
     fig.savefig(OUT / f"kiln_rtd_{name}.png", dpi=80)
@@ -55,7 +56,7 @@ for pe in (None, 20.0):
     if pe is not None:
         data["chemistry"]["peclet"] = pe
     case, kiln, sol = solve(data)
-    rtd = residence_time_effects(case, kiln, sol)
+    rtd = residence_time_effects(kiln, sol, peclet=bed_peclet(case, sol.residence_time)[0])
     print("limestone 0.018 kg/s gas, Pe", pe, rtd.summary())
     if pe is not None:
         fig = rtd.plot()

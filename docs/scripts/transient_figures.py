@@ -17,8 +17,8 @@ import numpy as np  # noqa: E402
 from rotarykiln.case import load_case  # noqa: E402
 from rotarykiln.cases import builtin_case_path  # noqa: E402
 from rotarykiln.kiln.from_case import kiln_from_case  # noqa: E402
-from rotarykiln.kiln.transient.events import parse_transient  # noqa: E402
 from rotarykiln.kiln.transient.integrate import simulate  # noqa: E402
+from rotarykiln.transient_file import parse_transient  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "figures"
 OUT.mkdir(exist_ok=True)

@@ -35,12 +35,11 @@ import re
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
 from pydantic_core import PydanticCustomError
 
 from rotarykiln.errors import InputError
 from rotarykiln.materials._library import load_library
-from rotarykiln.transverse.config import TransverseSection
 from rotarykiln.units import to_si
 from rotarykiln.yaml_limits import (
     MAX_NUMBER_CHARS,  # noqa: F401 (importable from here, as before)
@@ -207,6 +206,9 @@ HeatTransferCoefficient = quantity(
 SootFraction = quantity("fraction", ge=0, le=1e-4, shown="in [0, 1e-4]")
 Slope = quantity("angle", ge=0, lt=math.radians(45), shown="in [0, 45) deg")
 ReposeAngle = quantity("angle", gt=0, lt=math.radians(90), shown="in (0, 90) deg")
+Shrinkage = quantity("fraction", ge=0, lt=1, shown="in [0, 1)")
+"""The share of a bed's volume lost at full conversion (``transport.shrinkage``): 1 would be a
+bed that vanishes."""
 FillFraction = quantity("fraction", ge=1e-3, lt=1, shown="in [0.001, 1)")
 """A bed fill: below 0.1 % no kiln model has a bed to work on (a fill of 1e-308 is refused at
 load rather than failing in the solver)."""
@@ -409,7 +411,7 @@ class Burner(Section):
 
     def ingress_flow(self) -> float:
         """Mass flow of the air ingress at the feed end, kg/s (0 without one)."""
-        from rotarykiln.materials.gas import molar_mass
+        from rotarykiln.materials.gas import AIR_MOLAR_MASS
         from rotarykiln.units import gas_flow
 
         if self.air_ingress is None:
@@ -424,11 +426,11 @@ class Burner(Section):
             )
         except InputError as exc:
             raise PydanticCustomError("number", "{msg}", {"msg": str(exc)}) from None
-        return f.mass_flow(molar_mass("O2:0.21, N2:0.79"))
+        return f.mass_flow(AIR_MOLAR_MASS)
 
     def mass_flows(self) -> tuple[float, float, float]:
         """Fuel, primary air and secondary air mass flows, kg/s (refused: no air, bad flows)."""
-        from rotarykiln.materials.gas import molar_mass
+        from rotarykiln.materials.gas import AIR_MOLAR_MASS, AIR_O2, molar_mass
         from rotarykiln.units import gas_flow
 
         def convert(name, value, mm, allow_zero=False):
@@ -450,7 +452,7 @@ class Burner(Section):
                 "fuel without air: give primary_air (and secondary_air) with their flows",
                 {},
             )
-        air_mm = molar_mass("O2:0.21, N2:0.79")
+        air_mm = AIR_MOLAR_MASS
         fuel = convert("fuel_flow", self.fuel_flow, molar_mass(self.fuel))
         prim = sec = 0.0
         if self.primary_air is not None:
@@ -464,7 +466,7 @@ class Burner(Section):
         from rotarykiln.materials.gas import fuel_data, parse_composition
 
         o2_demand = fuel_data(parse_composition(self.fuel))[1]  # mol O2 per mol of fuel
-        stoichiometric = fuel / molar_mass(self.fuel) * o2_demand / 0.21 * air_mm  # kg/s
+        stoichiometric = fuel / molar_mass(self.fuel) * o2_demand / AIR_O2 * air_mm  # kg/s
         if prim + sec < stoichiometric * (1.0 - 1e-9):
             raise PydanticCustomError(
                 "number",
@@ -583,6 +585,15 @@ class Transport(Section):
     ``model``: ``kramers`` (Kramers-Croockewit/Saeman ODE) or ``scott`` (Scott 1986);
     ``friction`` (Scott): ``zero``, ``dynamic``, ``static`` or a number; ``dam_height``:
     discharge dam above the wall (open end if absent); ``weirs`` (Scott only).
+
+    In a reacting kiln (``chemistry:``) the Kramers bed depth is solved with the balances, at
+    the bed's volume flow by ``volume``: ``bulk`` (default: the mass flow over
+    ``material.bulk_density``; a bed that loses mass compacts) or ``fresh_feed`` (the fresh
+    feed's volume flow, its mass over ``material.bulk_density``, all along: particles that keep
+    their size as they lose mass, as the wood chips of the rotaryPyrolysis script; the bulk
+    density then falls). ``shrinkage`` (with ``fresh_feed``): the fraction of that volume lost
+    at full conversion of the fed species, in [0, 1) (e.g. ``30 %`` for wood chips that lose
+    about a third of their volume when charred); default 0.
     """
 
     model: Literal["kramers", "scott"] = "kramers"
@@ -590,12 +601,21 @@ class Transport(Section):
     dam_height: Length | None = None
     weirs: list[TransportWeir] = []
     n_points: _int_in(2, 100_000) = 201
+    volume: Literal["bulk", "fresh_feed"] = "bulk"
+    shrinkage: Shrinkage = 0.0
 
     @model_validator(mode="after")
     def _weirs_need_scott(self):
         if self.weirs and self.model != "scott":
             raise PydanticCustomError(
                 "number", "weirs are given with the kramers model: weirs need model: scott", {}
+            )
+        if self.shrinkage > 0 and self.volume != "fresh_feed":
+            raise PydanticCustomError(
+                "number",
+                "shrinkage: {value} is not 0 with volume: {volume} (a shrinkage is a share of "
+                "the fresh feed's volume: volume: fresh_feed)",
+                {"value": f"{self.shrinkage:g}", "volume": self.volume},
             )
         return self
 
@@ -885,6 +905,60 @@ def _positive_int(v: Any) -> int:
     if isinstance(v, bool) or not isinstance(v, int) or v < 1:
         raise PydanticCustomError("number", "{value} is not an integer >= 1", {"value": v})
     return v
+
+
+# --- transverse: the retort zone of the transverse grid model (seed 000 ch 9) -----------------
+
+_TLength = quantity("length", gt=0, shown="> 0")
+_TTemperature = quantity("temperature", gt=0, shown="> 0 K")
+_TDensity = quantity("density", gt=0, shown="> 0")
+_TSpecificHeat = quantity("specific heat", gt=0, shown="> 0")
+_TTime = quantity("time", gt=0, shown="> 0 s")
+_TFraction = quantity("fraction", gt=0, le=1, shown="in (0, 1]")
+
+
+def _shale_to_ash(value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) or not value > 0:
+        raise PydanticCustomError(
+            "number", "{value} is not > 0 (a mass ratio of shale to ash)", {"value": value}
+        )
+    return float(value)
+
+
+class _TransverseSection(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class FeedSection(_TransverseSection):
+    """One feed (shale or ash): mean size, initial temperature, properties."""
+
+    mean_size: _TLength
+    temperature: _TTemperature
+    bulk_density: _TDensity | None = None
+    heat_capacity: _TSpecificHeat | None = None
+
+
+class GridSection(_TransverseSection):
+    """Grid size: stagnant layers (the active layer gets 2 zones per layer) and zones."""
+
+    layers: int = Field(5, ge=2)
+    zones: int = Field(20, ge=4)
+
+
+class TransverseSection(_TransverseSection):
+    """Settings of the transverse grid simulation with heating (retort zone, ch 9)."""
+
+    duration: _TTime = 220.0
+    shale_to_ash: Annotated[float, BeforeValidator(_shale_to_ash)] = 0.32
+    shale: FeedSection = FeedSection(mean_size=1.54e-3, temperature=548.0)
+    ash: FeedSection = FeedSection(mean_size=2.11e-3, temperature=1048.0)
+    distribution: Literal["auto", "single", "table4.1"] = "auto"
+    voidage: _TFraction = 0.5
+    emissivity: _TFraction = 0.9
+    balance: Literal["pairwise", "smaller"] = "pairwise"
+    segregation: bool = True
+    grid: GridSection = GridSection()
+    snapshot_times: list[_TTime] = [5.0, 10.0, 20.0, 40.0, 60.0, 220.0]
 
 
 class Case(Section):
@@ -1478,3 +1552,12 @@ def load_case(path: str | Path) -> Case:
     0.1571
     """
     return parse_case(read_case_yaml(path), source=str(path), base_dir=_case_folder(path))
+
+
+def case_json_schema() -> dict:
+    """The JSON Schema (draft 2020-12) of a case file (:func:`rotarykiln.case_io.json_schema_of`
+    of :class:`Case`): what an editor can check while typing; the loader checks more (units,
+    ranges, library names)."""
+    from rotarykiln.case_io import json_schema_of
+
+    return json_schema_of(Case)

@@ -36,7 +36,7 @@ __all__ = [
     "DISPLAY_UNITS",
     "SCHEMA_DIALECT",
     "case_hash",
-    "case_json_schema",
+    "json_schema_of",
     "case_to_yaml",
     "dump_case",
     "format_si",
@@ -106,10 +106,11 @@ def _flatten(node: Any) -> Any:
     return node
 
 
-def case_json_schema() -> dict[str, Any]:
-    """The JSON Schema (draft 2020-12) of a case file.
+def json_schema_of(model) -> dict[str, Any]:
+    """The JSON Schema (draft 2020-12) of a case file, from its pydantic ``model``.
 
-    Generated from :class:`rotarykiln.case.Case` in validation mode: unknown keys are refused
+    Generated from the model (:class:`rotarykiln.case.Case`:
+    :func:`rotarykiln.case.case_json_schema`) in validation mode: unknown keys are refused
     (``additionalProperties: false``) and every quantity field accepts a number (SI) or a string
     with a unit. The loader checks more than the schema says (units of the right kind, ranges,
     library names); the schema is what an editor can check while typing.
@@ -121,15 +122,14 @@ def case_json_schema() -> dict[str, Any]:
 
     Examples
     --------
-    >>> schema = case_json_schema()
+    >>> from rotarykiln.case import Case
+    >>> schema = json_schema_of(Case)
     >>> schema["$defs"]["Kiln"]["additionalProperties"]
     False
     >>> schema["$defs"]["Kiln"]["properties"]["length"]["anyOf"]
     [{'type': 'number'}, {'type': 'string'}]
     """
-    from rotarykiln.case import Case
-
-    body = _flatten(Case.model_json_schema(mode="validation", schema_generator=_CaseSchema))
+    body = _flatten(model.model_json_schema(mode="validation", schema_generator=_CaseSchema))
     body["title"] = "rotarykiln case"
     return {"$schema": SCHEMA_DIALECT, **body}
 

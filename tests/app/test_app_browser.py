@@ -246,8 +246,7 @@ def _page_text(driver) -> str:
 def test_each_case_type_shows_its_results_and_the_page_holds_at_420_px(
     browser, app_server, screenshot
 ):
-    from rotarykiln.commands.model_runs import bed_profile_from_case
-    from rotarykiln.rtd.predict import predict_from_case
+    from rotarykiln.commands.model_runs import bed_profile_from_case, predict_from_case
 
     _open(browser, app_server)
 

@@ -238,7 +238,7 @@ def _panel_text(result) -> str:
 
 def test_an_rtd_case_shows_its_distribution_with_its_moments(store):
     from rotarykiln.app.results import MAX_POINTS
-    from rotarykiln.rtd.predict import predict_from_case
+    from rotarykiln.commands.model_runs import predict_from_case
 
     result = store.run(load_builtin("rtd/bongo_njeng_sand_rl"), "rtd/bongo_njeng_sand_rl")
     rtd = result.models["rtd"]
@@ -275,7 +275,7 @@ def test_a_transport_case_shows_its_bed_profile_and_no_server_path(store):
 def test_a_transverse_case_runs_as_the_transverse_command(store):
     import dataclasses
 
-    from rotarykiln.transverse.config import retort_spec_from_case
+    from rotarykiln.commands.transverse import retort_spec_from_case
     from rotarykiln.transverse.retort import run_retort
 
     result = store.run(load_builtin("retort/case02"), "retort/case02")
@@ -295,7 +295,7 @@ def test_a_transverse_case_runs_as_the_transverse_command(store):
 @pytest.mark.parametrize("name", [n for n in builtin_cases() if n.startswith("retort/")])
 def test_the_app_runs_the_transverse_section_of_every_builtin_retort_case(name):
     from rotarykiln.app.results import TRANSVERSE_SECONDS, transverse_estimate
-    from rotarykiln.transverse.config import retort_spec_from_case
+    from rotarykiln.commands.transverse import retort_spec_from_case
 
     seconds, why = transverse_estimate(retort_spec_from_case(parse_case(load_builtin(name))))
     assert why == "" and seconds < TRANSVERSE_SECONDS / 2

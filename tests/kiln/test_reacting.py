@@ -13,7 +13,7 @@ from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.calcination import R_GAS  # noqa: F401  (module imports cleanly)
 from rotarykiln.chemistry.plugflow import integrate_plug_flow
-from rotarykiln.commands.kiln_runs import kiln_runner, run_kiln_case
+from rotarykiln.commands.kiln_runs import bed_peclet, kiln_runner, run_kiln_case
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln.bed.residence import KilnRTD, residence_time_effects
 from rotarykiln.kiln.from_case import kiln_from_case
@@ -196,13 +196,14 @@ def test_residence_time_effects_peclet_sources(charcoal):
     data = _data("charcoal_activation")
     case = parse_case(data)
     kiln, _ = kiln_from_case(case)
-    default = residence_time_effects(case, kiln, charcoal, n_tau=12)
+    default = residence_time_effects(kiln, charcoal, n_tau=12)
     # Sherritt: D = 0.0011 (N/Nc)^0.39 D^1.15 dp^0.46 X^-0.43, Pe = u L / D
     assert default.peclet == pytest.approx(
         kiln.bed.velocity * kiln.drum.length / default.dispersion, rel=1e-12
     )
     data["chemistry"]["peclet"] = 5.0
-    low = residence_time_effects(parse_case(data), kiln, charcoal, n_tau=12)
+    peclet, model = bed_peclet(parse_case(data), charcoal.residence_time)
+    low = residence_time_effects(kiln, charcoal, n_tau=12, peclet=peclet, model=model)
     assert low.peclet == 5.0
     assert low.result.mean_residence_time == pytest.approx(kiln.residence_time * 1.4, rel=2e-3)
     # strong dispersion: segregated and plug flow now differ visibly for this almost-linear
@@ -211,7 +212,9 @@ def test_residence_time_effects_peclet_sources(charcoal):
     del data["chemistry"]["peclet"]
     data["material"]["particle_size"] = "5 mm"
     data["rtd"] = {"correlation": "sherritt2003", "model": "closed-closed"}
-    cc = residence_time_effects(parse_case(data), kiln, charcoal, n_tau=12)
+    peclet, model = bed_peclet(parse_case(data), charcoal.residence_time)
+    assert model == "closed-closed"
+    cc = residence_time_effects(kiln, charcoal, n_tau=12, peclet=peclet, model=model)
     assert cc.result.mean_residence_time == pytest.approx(kiln.residence_time, rel=2e-3)
     assert 0 < cc.result.segregated < 1
 

@@ -94,7 +94,7 @@ def _hot_kiln(products):
 def test_fired_kiln_enters_at_the_equilibrium_adiabatic_temperature():
     data, kiln = _hot_kiln("equilibrium")
     _, frozen = _hot_kiln("complete")
-    flame, flame_fr = kiln.firing.flame, frozen.flame
+    flame, flame_fr = kiln.firing.flame, frozen.firing.flame
     # independent: Cantera HP equilibrium (no nitrogen oxides) of the unburnt fuel and air
     gas = _restricted()
     fuel = ct.Solution("gri30.yaml")
@@ -103,15 +103,16 @@ def test_fired_kiln_enters_at_the_equilibrium_adiabatic_temperature():
     streams = [(fuel, b.fuel_flow)]
     for a in (b.primary_air, b.secondary_air):
         s = ct.Solution("gri30.yaml")
-        s.TPX = a.temperature, 101325.0, "O2:0.21, N2:0.79"
+        s.TPX = a.temperature, 101325.0, "O2:0.2095, N2:0.7808, AR:0.0097"  # dry air
         streams.append((s, a.flow))
     m = sum(q for _, q in streams)
     h = sum(s.enthalpy_mass * q for s, q in streams) / m
     y = sum(s.Y * q for s, q in streams) / m
     elements = {e: sum(y[k] * fuel.n_atoms(k, e) / fuel.molecular_weights[k] for k in
-                       range(fuel.n_species)) for e in ("C", "H", "O", "N")}  # fmt: skip
+                       range(fuel.n_species)) for e in ("C", "H", "O", "N", "Ar")}  # fmt: skip
     # products of the same elements: equilibrate from a complete-combustion start
     x = {"CO2": elements["C"], "H2O": elements["H"] / 2.0, "N2": elements["N"] / 2.0}
+    x["AR"] = elements["Ar"]
     x["O2"] = (elements["O"] - 2.0 * x["CO2"] - x["H2O"]) / 2.0
     gas.TPX = 2000.0, 101325.0, x
     gas.HP = h, 101325.0

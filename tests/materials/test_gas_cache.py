@@ -159,7 +159,7 @@ def _burn_as_before(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature
     gas_f = ct.Solution(G.MECHANISM)
     gas_f.TPX = fuel_temperature, 101325.0, dict(fuel)
     gas_a = ct.Solution(G.MECHANISM)
-    gas_a.TPX = air_temperature, 101325.0, "O2:0.21, N2:0.79"
+    gas_a.TPX = air_temperature, 101325.0, G.AIR
     mix = ct.Quantity(gas_f, mass=fuel_flow, constant="HP") + ct.Quantity(
         gas_a, mass=air_flow, constant="HP"
     )

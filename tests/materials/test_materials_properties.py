@@ -41,10 +41,10 @@ def test_methane_lhv():
     # LHV of methane 50.0 MJ/kg (e.g. Turns, An Introduction to Combustion, App. B: 50,016 kJ/kg)
     b = burn_fuel("CH4:1", 1e-3, 20e-3)
     assert b.heat_release / 1e-3 == pytest.approx(50.0e6, rel=0.005)
-    # complete combustion by hand: 1 g CH4 + 20 g air (O2 0.21, N2 0.79 by mole)
+    # complete combustion by hand: 1 g CH4 + 20 g dry air (O2 0.2095, N2 0.7808, Ar 0.0097)
     n_ch4 = 1 / 16.043
-    n_air = 20 / (0.21 * 31.998 + 0.79 * 28.014)
-    n_tot = n_ch4 + 2 * n_ch4 + (0.21 * n_air - 2 * n_ch4) + 0.79 * n_air
+    n_air = 20 / (0.2095 * 31.998 + 0.7808 * 28.014 + 0.0097 * 39.948)
+    n_tot = n_ch4 + 2 * n_ch4 + (0.2095 * n_air - 2 * n_ch4) + 0.7905 * n_air
     assert b.table.x_co2 == pytest.approx(n_ch4 / n_tot, rel=1e-3)
     assert b.table.x_h2o == pytest.approx(2 * n_ch4 / n_tot, rel=1e-3)
     assert b.mass_flow * (b.table.enthalpy(b.adiabatic_temperature) - b.table.enthalpy(298.15)) == (

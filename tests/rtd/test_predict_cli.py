@@ -8,9 +8,10 @@ import pytest
 
 from rotarykiln.case import parse_case
 from rotarykiln.cli import main
+from rotarykiln.commands.model_runs import predict_from_case
 from rotarykiln.errors import InputError
 from rotarykiln.rtd.dispersion import open_open_exit_age
-from rotarykiln.rtd.predict import predict_from_case, predict_rtd
+from rotarykiln.rtd.predict import predict_rtd
 
 CASE = {
     "name": "pilot",

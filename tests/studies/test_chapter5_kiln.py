@@ -45,9 +45,9 @@ def test_gas_flow_at_fixed_firing_reproduces_seed_004_direction():
     from scipy.optimize import brentq
 
     from rotarykiln.case import parse_case
+    from rotarykiln.cases import builtin_case
     from rotarykiln.commands.kiln_runs import run_kiln_case
     from rotarykiln.kiln.gas_mixture import GasMixture
-    from rotarykiln.cases import builtin_case
 
     base = builtin_case("charcoal_activation")
     comp = base["gas"]["mass_fractions"]

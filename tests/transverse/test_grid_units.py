@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 
 from rotarykiln.case import parse_case
 from rotarykiln.cli import main
+from rotarykiln.commands.transverse import retort_spec_from_case
 from rotarykiln.errors import InputError, OutOfRangeWarning
-from rotarykiln.transverse.config import retort_spec_from_case
 from rotarykiln.transverse.grid import GridMaterial, simulate_grid
 from rotarykiln.transverse.grid_geometry import build_grid
 from rotarykiln.transverse.heating import cell_heat_exchange, thomas_sphere_nusselt

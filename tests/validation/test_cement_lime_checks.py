@@ -350,7 +350,8 @@ def test_check8_pittsburgh_heating_value():
     f = sf.load_kiln_fuel("pittsburgh_8")
     d = f.dry
     assert d["O"] == pytest.approx(0.0663, abs=5e-5)  # O by difference, note 5.2
-    # measured 13404 Btu/lb ar at 1.65 % moisture = 31.18 MJ/kg ar = 31.70 dry (2 decimals)
+    # provenance (the fuel file carries the measured value): 13404 Btu/lb ar at 1.65 % moisture
+    # = 31.18 MJ/kg ar = 31.70 dry (2 decimals)
     assert f.hhv("ar") / 1e6 == pytest.approx(31.18, abs=5e-3)
     assert f.hhv("d") / 1e6 == pytest.approx(31.70, abs=5e-3)
     cp = f.hhv("d", "channiwala_parikh") / 1e6

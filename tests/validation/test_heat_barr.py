@@ -6,14 +6,19 @@ assumption the same for every trial, see docs/validation.md). The default burner
 instant burn-out at the burner (Hanein et al. 2017). Scored: RMSE of bed, gas 2.5 cm above the
 bed (raw gas temperature, no thermocouple correction) and inner wall, mean of the three trials.
 
-Issue 10 targets bed <= 25 K, gas <= 35 K, wall <= 30 K. This model reaches 30.3 / 24.6 / 29.3 K;
-the bed target is not met (the feed-end bed readings at z = 0.11 m are 35-115 K above what a
-feed at ambient can reach there, and T4's mid-kiln bed and wall are 35-45 K high). The bounds
-below are the achieved values plus a margin of about 10 %, so that a regression fails.
+Where the bounds come from. The source states no accuracy for its thermocouples (the data README,
+src/rotarykiln/data/barr1986/README.md, gives none), so no bound here rests on a measurement
+accuracy. The RMSE bounds are the targets issue 10 set for these three trials (docs/validation.md,
+"target" row of the Barr table): bed <= 25 K, gas <= 35 K, wall <= 30 K. The model reaches
+30.3 / 24.6 / 29.3 K: gas and wall are asserted; the bed target is not met (the feed-end bed
+readings at z = 0.11 m are 35-115 K above what a feed at ambient can reach there, and T4's
+mid-kiln bed and wall are 35-45 K high), so it is a strict xfail. The exact numbers of each trial
+are held, as regression, by tests/test_golden_outputs.py, not by bounds here.
 """
 
 from __future__ import annotations
 
+import math
 from importlib import resources
 
 import numpy as np
@@ -36,29 +41,84 @@ def solutions():
     return {t: run_kiln_case(load_case(builtin_case_path(f"barr_{t}"))) for t in TRIALS}
 
 
-def test_cases_hold_the_data_file_measurements():
-    # the built-in cases are generated from the copied data file: check they agree
-    path = resources.files("rotarykiln") / "data" / "barr1986" / "barr_pilot_kiln_T3_T4_T6.yaml"
+DATA_FILES = {
+    "T2": "barr_pilot_kiln_T2_T9.yaml",
+    "T3": "barr_pilot_kiln_T3_T4_T6.yaml",
+    "T4": "barr_pilot_kiln_T3_T4_T6.yaml",
+    "T6": "barr_pilot_kiln_T3_T4_T6.yaml",
+    "T9": "barr_pilot_kiln_T2_T9.yaml",
+}
+
+
+def _litres_per_second(flow: str) -> float:
+    value, unit = flow.split()
+    assert unit == "L/s", flow  # the source's unit, read as normal litres (reference_temperature)
+    return float(value)
+
+
+@pytest.mark.parametrize("trial", sorted(DATA_FILES))
+def test_provenance_cases_carry_the_data_files_inputs_and_measurements(trial):
+    """Provenance, not a validation: each built-in case carries the measured inputs (CH4,
+    primary and secondary air, feed, sand size and bulk density, kiln, fill, speed) and the
+    measured temperatures with their positions of its trial in the shipped copy of the source's
+    table (src/rotarykiln/data/barr1986/, Barr 1986 via Hanein et al. 2017), which the case
+    files were generated from; compared with that data file, not with the case's own YAML."""
+    path = resources.files("rotarykiln") / "data" / "barr1986" / DATA_FILES[trial]
     data = yaml.safe_load(path.read_text())
-    for t in TRIALS:
-        m = load_case(builtin_case_path(f"barr_{t}")).measurements
-        src = data["cases"][t]["measured_K"]
-        assert m.t_bed == pytest.approx([v for _, v in src["T_bed"]])
-        assert m.t_gas == pytest.approx([v for _, v in src["T_gas_off_bed"]])
-        assert m.t_wall == pytest.approx([v for _, v in src["T_wall"]])
+    src, kiln = data["cases"][trial], data["kiln"]
+    case = load_case(builtin_case_path(f"barr_{trial}"))
+    b = case.burner
+    assert b.fuel == "CH4:1"
+    assert _litres_per_second(b.fuel_flow) == pytest.approx(src["CH4_L_s"], rel=1e-12)
+    assert _litres_per_second(b.primary_air.flow) == pytest.approx(src["primary_air_L_s"])
+    assert _litres_per_second(b.secondary_air.flow) == pytest.approx(src["secondary_air_L_s"])
+    assert case.operation.feed * 3600 == pytest.approx(src["feed_kg_h"], rel=1e-12)
+    assert case.material.particle_size * 1000 == pytest.approx(src["particle_mm"], rel=1e-12)
+    grade = "coarse_2.5mm" if src["particle_mm"] == 2.5 else "fine_0.58mm"
+    assert case.material.bulk_density == data["sand"]["bulk_density_kg_m3"][grade]
+    assert case.kiln.length == kiln["length_m"]
+    assert case.kiln.diameter == pytest.approx(2 * kiln["inner_radius_m"], rel=1e-12)
+    assert case.bed.fill == kiln["fill_fraction"]
+    assert case.operation.speed * 30 / math.pi == pytest.approx(kiln["speed_rpm"], rel=1e-8)
+    m = case.measurements
+    for key, column in (
+        ("bed", "T_bed"),
+        ("gas", "T_gas_off_bed"),
+        ("gas_wall", "T_gas_off_wall"),
+        ("wall", "T_wall"),
+    ):
+        assert getattr(m, f"z_{key}") == pytest.approx([z for z, _ in src["measured_K"][column]])
+        assert getattr(m, f"t_{key}") == pytest.approx([t for _, t in src["measured_K"][column]])
 
 
-def test_rmse_against_measurements(solutions):
+def _mean_rmse(solutions):
     scores = {"bed": [], "gas": [], "wall": []}
     for sol in solutions.values():
         m = sol.measurements
         scores["bed"].append(_rmse(sol.bed_temperature_at(m["z_bed"]), m["t_bed"]))
         scores["gas"].append(_rmse(sol.gas_temperature_at(m["z_gas"]), m["t_gas"]))
         scores["wall"].append(_rmse(sol.wall_temperature_at(m["z_wall"]), m["t_wall"]))
-    mean = {k: float(np.mean(v)) for k, v in scores.items()}
-    assert mean["bed"] < 35.0
-    assert mean["gas"] < 27.0
-    assert mean["wall"] < 32.5
+    return {k: float(np.mean(v)) for k, v in scores.items()}
+
+
+def test_gas_and_wall_rmse_meet_the_issue_10_targets(solutions):
+    """Mean RMSE of the three trials: gas 2.5 cm above the bed <= 35 K and inner wall <= 30 K,
+    the targets of issue 10 (docs/validation.md, "target" row); the source gives no measurement
+    accuracy (module docstring)."""
+    mean = _mean_rmse(solutions)
+    assert mean["gas"] <= 35.0, mean  # issue 10 target
+    assert mean["wall"] <= 30.0, mean  # issue 10 target
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the bed target of issue 10 is not met (30.3 K; docs/validation.md, Barr: the "
+    "feed-end readings and T4's mid-kiln bias); when it is, strict xfail fails: remove the mark",
+)
+def test_bed_rmse_meets_the_issue_10_target(solutions):
+    """Mean bed RMSE of the three trials <= 25 K, the target of issue 10."""
+    mean = _mean_rmse(solutions)
+    assert mean["bed"] <= 25.0, mean  # issue 10 target
 
 
 def test_bed_rises_to_the_discharge(solutions):
@@ -80,7 +140,9 @@ def test_balances_close_and_sheet_adds_up(solutions):
 
 
 def test_firing_rate_matches_the_reference_note():
-    # flames.md section 6 (Cantera, 0 degC basis): Q = 50.8, 70.5, 32.2 kW LHV
+    """Not a validation: an independent check of the front end's conversion of the measured
+    flows to a firing rate. flames.md section 6 computed it separately (Cantera, 0 degC basis):
+    Q = 50.8, 70.5, 32.2 kW LHV, printed to 3 digits (2e-3)."""
     for t, q in zip(TRIALS, (50.8e3, 70.5e3, 32.2e3), strict=True):
         case = load_case(builtin_case_path(f"barr_{t}"))
         from rotarykiln.kiln.from_case import kiln_from_case
@@ -123,19 +185,6 @@ def test_mixing_limited_burnout_option_converges_and_closes(counter_current):
 
 
 ALL_TRIALS = ("T2", "T3", "T4", "T6", "T9")
-
-
-def test_new_cases_hold_the_second_data_file_measurements():
-    # T2 and T9 (issue 23) come from barr_pilot_kiln_T2_T9.yaml
-    path = resources.files("rotarykiln") / "data" / "barr1986" / "barr_pilot_kiln_T2_T9.yaml"
-    data = yaml.safe_load(path.read_text())
-    for t in ("T2", "T9"):
-        m = load_case(builtin_case_path(f"barr_{t}")).measurements
-        src = data["cases"][t]["measured_K"]
-        assert m.t_bed == pytest.approx([v for _, v in src["T_bed"]])
-        assert m.t_gas == pytest.approx([v for _, v in src["T_gas_off_bed"]])
-        assert m.t_gas_wall == pytest.approx([v for _, v in src["T_gas_off_wall"]])
-        assert m.t_wall == pytest.approx([v for _, v in src["T_wall"]])
 
 
 @pytest.mark.xfail(

@@ -48,6 +48,8 @@ def test_table3_coefficients_of_variation(key, group):
 
 
 def test_table3_cv_values_are_the_six_printed():
+    # provenance: the shipped Table 3 (data/bongo_njeng2015/table3_replicates.csv) carries the
+    # six Cv values the paper prints
     printed = []
     for _, group in _groups():
         printed += [group["cv_mrt_percent"].iloc[0], group["cv_vrt_percent"].iloc[0]]
@@ -138,13 +140,27 @@ def test_correlation_trends_reported_by_the_paper():
 
 
 def test_correlation_magnitudes_match_the_measurements():
-    # The measured D lie in 1e-7 - 1e-4 m2/s (sec. 4.2) and Eq. 18 matches them within about
-    # +/-20 % (Fig. 10c); the paper prints no per-run D, so compare with the moment-method D of
-    # the sand benchmark replicates (2.5-3.3e-6), which the paper says are >= the fitted ones.
+    # The measured D lie in 1e-7 - 1e-4 m2/s (sec. 4.2) and Eq. 18 matches the fitted D within
+    # +/-20 % (the margin lines of Fig. 10c, the only accuracy the paper gives). The paper prints
+    # no per-run D; it says the fitted D are <= the moment-method ("theoretical") D, which the
+    # shipped replicate_moment_method.csv derives from Table 3. Upper bound: 1.2 x the largest
+    # moment-method D of the run's replicates (sand 2.1 deg: 3.25e-6; rice 10 rpm: 4.54e-5).
+    moments = bongo_njeng_table("replicate_moment_method")
+
+    def upper(run):
+        rows = moments[moments["run"].str.startswith(run)]
+        assert len(rows) == 3
+        return 1.2 * rows["dispersion_m2_s"].max()
+
     d_sand = [_bn("sand", lifter, slope=2.1) for lifter in ("straight", "rectangular")]
-    assert all(1e-6 < d < 3.3e-6 for d in d_sand)
+    assert all(d <= upper("sand 3 rpm 2.1 deg") for d in d_sand)
     d_rice10 = _bn("broken rice", "rectangular", rpm=10)
-    assert 1e-5 < d_rice10 < 4.5e-5  # moment-method D of the 10 rpm rice replicates: 3.3-4.5e-5
+    assert d_rice10 <= upper("rice 10 rpm 2 deg")
+    # lower bounds: the paper gives none for the fitted D (only "<= the moment-method D"), so
+    # these are not from the source; they hold Eq. 18 to the order of magnitude of the data
+    # (the unit conventions it rules out are 100-300 x smaller: notes 003, sec. 2.6)
+    assert all(d > 1e-6 for d in d_sand)
+    assert d_rice10 > 1e-5
 
 
 def test_sai_and_sherritt_under_predict_as_the_paper_says():

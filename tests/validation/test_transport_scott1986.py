@@ -19,14 +19,20 @@ from rotarykiln.transport.scott1986 import scott1986_model_fill, scott1986_table
 LEGIBLE = ("printed", "ocr_fixed")
 TABLES = [f"a4_{k:02d}" for k in (1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 16)]
 
-# Legible thesis values our model does not reach within 0.5 pp, with the reason (documented in
-# docs/validation.md). The test still bounds the deviation.
+# Legible thesis values our model does not reach within the 0.5 pp of the issue, with the reason
+# (documented in docs/validation.md): strict xfail at the same 0.5 pp, so that reaching them is
+# noticed (a bound at today's deviation plus a margin would rest on nothing in the source).
 KNOWN = {
     # Bachmann alpha_d at 53.5 and 66.9 % of critical speed (above the 50 % limit): alpha_d
     # rises to 65-73 deg; the thesis column is not reproduced (0.6 and 1.05 pp).
-    ("A4.11", 4, "bachmann"): 0.7,
-    ("A4.11", 5, "bachmann"): 1.1,
+    ("A4.11", 4, "bachmann"): "Bachmann alpha_d above 50 % of critical speed (0.6 pp off)",
+    ("A4.11", 5, "bachmann"): "Bachmann alpha_d above 50 % of critical speed (1.05 pp off)",
 }
+
+
+def _key(row):
+    variant = row.get("model_variant", "scott")
+    return (row["table"], int(row["row"]), variant if isinstance(variant, str) else "scott")
 
 
 def _rows():
@@ -38,15 +44,17 @@ def _rows():
             variant = row.get("model_variant", "scott")
             variant = variant if isinstance(variant, str) else "scott"
             curve = row.get("curve", row.get("group", ""))
-            yield pytest.param(row, id=f"{row['table']}-{curve}-{row['row']}-{variant}")
+            reason = KNOWN.get(_key(row))
+            marks = [pytest.mark.xfail(strict=True, reason=reason)] if reason else []
+            yield pytest.param(
+                row, id=f"{row['table']}-{curve}-{row['row']}-{variant}", marks=marks
+            )
 
 
 @pytest.mark.parametrize("row", list(_rows()))
 def test_thesis_model_column(row):
-    variant = row.get("model_variant", "scott")
-    key = (row["table"], int(row["row"]), variant if isinstance(variant, str) else "scott")
-    tol = KNOWN.get(key, 0.5)
-    assert scott1986_model_fill(row) == pytest.approx(row["model_fill_pct"], abs=tol)
+    # 0.5 percentage points of filling: the issue's requirement (module docstring)
+    assert scott1986_model_fill(row) == pytest.approx(row["model_fill_pct"], abs=0.5)
 
 
 def test_check_value():
@@ -77,13 +85,15 @@ def test_table_5_1_internal_weirs(k):
 
 def test_table_5_1_row_2_inconsistent_in_thesis():
     # rows 2 and 3 share the discharge geometry and nearly the feed (5.00 vs 4.95 g/s), so the
-    # discharge sections must agree; the thesis prints 17.9 vs 19.0. We follow row 3.
+    # discharge sections must agree; the thesis prints 17.9 vs 19.0. We follow row 3: row 2's
+    # discharge section against row 3's printed one within the 0.5 pp of the issue plus the
+    # 0.05 of the one-decimal print. Row 2's printed overall (24.5 %) is not asserted: the row
+    # is inconsistent in the thesis, and no accuracy supports a bound on it.
     t = scott1986_table("table_5_1")
     d2 = scott1986_model_fill(t.iloc[1], sections=True)
     d3 = scott1986_model_fill(t.iloc[2], sections=True)
     assert d2[1] == pytest.approx(d3[1], abs=0.2)
-    assert d2[1] == pytest.approx(t.iloc[2]["model_discharge_pct"], abs=0.2)
-    assert d2[2] == pytest.approx(24.5, abs=1.6)
+    assert d2[1] == pytest.approx(t.iloc[2]["model_discharge_pct"], abs=0.55)
 
 
 def _deviations(name, variant="scott", curve=None):

@@ -40,7 +40,8 @@ def test_table_6_2_x_al_and_v_al():
 
 
 # Loadings of the segregation series are not printed; one loading per series, fitted to its
-# X_AL and V_AL columns (the text confirms 15 % for series 30).
+# X_AL and V_AL columns (the text confirms 15 % for series 30). The test below is therefore a
+# provenance check of that reconstruction, not a validation of eqs 5.2/5.6.
 SERIES_FILL = {
     "28": 0.1459,
     "29": 0.1483,
@@ -55,6 +56,10 @@ SERIES_FILL = {
 
 
 def test_table_7_2_x_al_and_v_al():
+    """Provenance of the reconstructed loadings (SERIES_FILL), not a validation: they were fitted
+    to these X_AL and V_AL columns, one loading per series (1-10 speeds, two columns each); the
+    check shows one loading reproduces every row of its series within the printing, and that
+    series 30's is the 15 % the text states (printed as a whole percent: +-0.5 %)."""
     d = load_table("segregation_experiments")
     fill = np.array([SERIES_FILL[e[:2]] for e in d.exp])
     assert abs(SERIES_FILL["30"] - 0.15) < 0.005
@@ -68,15 +73,17 @@ def test_table_7_2_x_al_and_v_al():
 
 
 def test_retort_base_case_velocity():
-    """Case 2 of Table 9.2: 6 m drum, 5 rpm; the text gives V_AL = 7.01 m/s (fill 30 %)."""
+    """Provenance, not a validation: case 2 of Table 9.2 (6 m drum, 5 rpm) has no printed fill;
+    the 30 % of the retort cases is reconstructed from the V_AL = 7.01 m/s the text gives
+    (data/vanpuyvelde1999/README.md). A round 30 % reproduces it to the printed 0.01 m/s."""
     al = active_layer(3.0, 5 * RPM, 0.30)
     assert al.active_velocity == pytest.approx(7.01, abs=0.005)
 
 
 def test_small_drum_deviations_are_within_table_5_1():
-    """Table 5.1 compares eq 5.2 with 200/400 mm drums; deviations up to 10.7 %. Eq 5.2 has no
-    diameter in it, so the same X_AL holds for every drum (the claim being tested)."""
-    x1 = vanpuyvelde_active_layer_proportion(10 * RPM, 0.3)
-    assert x1 == pytest.approx(float(vanpuyvelde_active_layer_proportion(10 * RPM, 0.3)))
+    """Provenance, not a validation: Table 5.1 gives only the % deviations of eq 5.2 on the
+    200/400 mm drums, not their measured X_AL, so eq 5.2 cannot be scored on them here; the
+    shipped table carries the 1.4-10.7 % the thesis states for the smaller drums."""
     dev = load_table("active_layer_deviation_small_drums")
-    assert dev[["dev_200mm_percent", "dev_400mm_percent"]].to_numpy().max() <= 10.7
+    values = dev[["dev_200mm_percent", "dev_400mm_percent"]].to_numpy()
+    assert (values.min(), values.max()) == (1.4, 10.7)

@@ -21,9 +21,12 @@ def _v(res):
 
 
 def test_base_case_active_layer_velocity():
+    """Provenance, not a validation: Table 9.2 prints no fill; the retort cases' 30 % is
+    reconstructed from the V_AL = 7.01 m/s of case 2 in the text of ch 9
+    (data/vanpuyvelde1999/README.md), which it reproduces to the printed 0.01 m/s."""
     spec = retort_case(2)
     al = active_layer(spec.drum_diameter / 2, spec.omega, spec.fill)
-    assert al.active_velocity == pytest.approx(7.01, abs=0.005)  # text of ch 9
+    assert al.active_velocity == pytest.approx(7.01, abs=0.005)
 
 
 @pytest.mark.parametrize("balance", ["pairwise", "smaller"])

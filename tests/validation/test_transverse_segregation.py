@@ -42,17 +42,22 @@ def runs():
 
 def test_printed_coefficients_fall_below_the_thesis_predictions(runs):
     # The documented cause of the old 4.9 / 2.8 %: with Table 7.3 as printed (two decimals)
-    # eq 7.3 sits systematically below the thesis's own predicted column.
+    # eq 7.3 sits systematically below the thesis's own predicted column. "Systematically":
+    # the mean gap is below minus three standard errors of what the printing of P_pred alone
+    # can make (uniform +-HALF_UNIT: sd 2 HALF_UNIT / sqrt(12) per run, over the 47 runs).
+    noise = 3 * 2 * HALF_UNIT / np.sqrt(12) / np.sqrt(len(runs))
     bias_in = (runs.p_in_printed - runs.p_in_pred).mean()
     bias_out = (runs.p_out_printed - runs.p_out_pred).mean()
-    assert -0.020 < bias_in < -0.010
-    assert -0.008 < bias_out < -0.003
+    assert bias_in < -noise
+    assert bias_out < -noise
     assert np.abs(runs.p_in_printed - runs.p_in_pred).max() > 2 * HALF_UNIT
 
 
 def test_backfit_reproduces_the_thesis_predictions(runs):
-    # Back-fitted coefficients (stored to 4 decimals): every one of the 47 printed predictions
-    # is reproduced within its own rounding (half unit 0.005, + 0.0005 for the 4-decimal storage).
+    # Provenance of the back-fitted coefficients, not a validation: they were fitted to the
+    # predicted columns of Table 7.2 (test_backfit_provenance). Stored to 4 decimals, they
+    # reproduce every one of the 47 printed predictions within its own rounding (half unit
+    # 0.005, + 0.0005 for the 4-decimal storage).
     assert np.abs(runs.p_in_backfit - runs.p_in_pred).max() <= HALF_UNIT + 0.0005
     assert np.abs(runs.p_out_backfit - runs.p_out_pred).max() <= HALF_UNIT + 0.0005
     assert abs((runs.p_in_backfit - runs.p_in_pred).mean()) < 0.001
@@ -122,11 +127,13 @@ def test_validation_runs(runs, exp):
 
 
 def test_layer_balance(runs):
-    # 0.25 P_in + 0.75 P_out ~ 1: the data close it within 2.3 %; the model (independent lines
-    # for the two layers) within 2.5 % back-fitted, 3.6 % printed (PSR 5.71, high speed).
+    # 0.25 P_in + 0.75 P_out = 1: the fines are conserved between the two layers. The model has
+    # independent lines for the two layers, so it closes this only approximately; the thesis's
+    # own predicted columns close it to e_pred (2.5 %, from the shipped Table 7.2), and the
+    # back-fitted model reproduces each P within HALF_UNIT + 0.0005 (above), hence closes it
+    # within e_pred + (0.25 + 0.75) (HALF_UNIT + 0.0005). (The data themselves close it within
+    # 2.3 %, the thesis's "about 2 %"; the printed coefficients, 3.6 %, have no such bound.)
+    bal_pred = 0.25 * runs.p_in_pred + 0.75 * runs.p_out_pred
+    e_pred = float(np.max(np.abs(bal_pred - 1)))
     bal = 0.25 * runs.p_in_backfit + 0.75 * runs.p_out_backfit
-    assert float(np.max(np.abs(bal - 1))) < 0.03
-    bal = 0.25 * runs.p_in_printed + 0.75 * runs.p_out_printed
-    assert float(np.max(np.abs(bal - 1))) < 0.04
-    bal_exp = 0.25 * runs.p_in_exp + 0.75 * runs.p_out_exp
-    assert float(np.max(np.abs(bal_exp - 1))) < 0.025
+    assert float(np.max(np.abs(bal - 1))) <= e_pred + HALF_UNIT + 0.0005

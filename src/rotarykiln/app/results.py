@@ -183,7 +183,7 @@ def transverse_results(case, out: Path, source: str) -> dict[str, Any]:
         ``inputs`` (rows of :func:`transverse_inputs`), ``command``; and ``series`` (columns)
         with ``summary`` (name -> value) when run, else ``skipped`` (a sentence).
     """
-    from rotarykiln.transverse.config import retort_spec_from_case
+    from rotarykiln.commands.transverse import retort_spec_from_case
 
     command = f"rotarykiln transverse {source}"
     found: dict[str, Any] = {"inputs": transverse_inputs(case), "command": command}

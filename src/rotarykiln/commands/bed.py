@@ -18,8 +18,8 @@ from rotarykiln.commands._args import (
     print_json,
     to_si_within,
 )
+from rotarykiln.commands.model_runs import write_bed_profile
 from rotarykiln.errors import InputError
-from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
 from rotarykiln.report import format_table
 from rotarykiln.transport.solve import N_POINTS_RANGE, solve_bed
 
@@ -79,20 +79,6 @@ def _friction(text):
         return text
 
 
-def _write(profile, out) -> dict:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    write_frame_atomic(out / "profile.csv", profile.to_frame(), index=False)
-    write_json_atomic(out / "summary.json", profile.summary())
-    ax = profile.plot()
-    save_figure_atomic(out / "profile.png", ax.figure, dpi=110, bbox_inches="tight")
-    plt.close(ax.figure)
-    return {"profile_csv": str(out / "profile.csv"), "profile_png": str(out / "profile.png")}
-
-
 def run(args: argparse.Namespace) -> int:
     low, high = N_POINTS_RANGE
     if not low <= args.points <= high:
@@ -131,7 +117,7 @@ def run(args: argparse.Namespace) -> int:
     summary = {k: v for k, v in profile.summary().items() if k != "section_fills"}
     summary["mean_residence_time_min"] = profile.mean_residence_time / 60.0
     if args.out:
-        summary.update(_write(profile, out_dir(args.out, "bed-results")))
+        summary.update(write_bed_profile(profile, out_dir(args.out, "bed-results")))
     if args.json:
         print_json(dict(summary, section_fills=profile.summary()["section_fills"]))
     else:

@@ -14,14 +14,14 @@ import warnings
 from pathlib import Path
 
 from rotarykiln.commands.model_runs import ModelRun
-from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.from_case import default_origins, kiln_from_case
 from rotarykiln.kiln.results import closure_warnings
 from rotarykiln.kiln.results.solution import KilnSolution
 from rotarykiln.kiln.steady.solve import solve_kiln
 
 log = logging.getLogger(__name__)
 
-__all__ = ["kiln_run", "kiln_runner", "run_kiln_case"]
+__all__ = ["bed_peclet", "kiln_run", "kiln_runner", "run_kiln_case"]
 
 
 def run_kiln_case(case, n_cells: int | None = None) -> KilnSolution:
@@ -77,7 +77,10 @@ def kiln_run(case) -> ModelRun:
         warnings.simplefilter("always")  # every closure's check: grouped below
         sol = solve_kiln(kiln, cells)
         # nothing fed reacts: no residence-time effect to show
-        rtd = None if fed_reactant(kiln) is None else residence_time_effects(case, kiln, sol)
+        rtd = None
+        if fed_reactant(kiln) is not None:
+            peclet, model = bed_peclet(case, sol.residence_time)
+            rtd = residence_time_effects(kiln, sol, peclet=peclet, model=model)
     log.info(
         "kiln solved: bed out %.1f K, gas out %.1f K, heat to solids %.4g W, energy closure %.2g, "
         "elements %.2g, %d Newton iterations",
@@ -89,13 +92,13 @@ def kiln_run(case) -> ModelRun:
         sol.iterations,
     )
     # one warning per closure out of its range, with the heat flow it feeds and its share
-    shown = closure_warnings.emit(caught, sol, case)
+    shown = closure_warnings.emit(caught, sol, default_origins(case))
     extra = rtd.summary() if rtd is not None else {}
     summary = {f"kiln_{k}": v for k, v in sol.summary().items() if k != "name"}
     summary.update({f"kiln_{k}": v for k, v in extra.items()})
 
     def write(out) -> dict:
-        from rotarykiln.kiln.run_files import write_solution_files
+        from rotarykiln.outputs import write_solution_files
 
         out = Path(out)
         if rtd is None:
@@ -121,3 +124,18 @@ def kiln_runner(case, out: Path) -> dict:
     figures to ``out``, return the summary."""
     run = kiln_run(case)
     return {**run.summary, **run.write(Path(out))}
+
+
+def bed_peclet(case, mean_residence_time: float) -> tuple[float | None, str]:
+    """The bed's Peclet number of a case and the RTD model it belongs to: ``chemistry.peclet``
+    if given, else from the case's ``rtd:`` section
+    (:func:`~rotarykiln.commands.model_runs.peclet_from_case` at ``mean_residence_time``, s),
+    else None (the kiln's own dispersion correlation); open-open boundaries unless the
+    ``rtd:`` section names its model."""
+    from rotarykiln.commands.model_runs import peclet_from_case
+
+    pe = case.chemistry.peclet if case.chemistry is not None else None
+    if pe is None and case.rtd is not None:
+        pe, _ = peclet_from_case(case, mean_residence_time)
+        return pe, case.rtd.model
+    return pe, "open-open"

@@ -13,22 +13,36 @@ to write its files. ``rotarykiln run`` and :func:`rotarykiln.run` both go throug
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from rotarykiln.errors import InputError
+from rotarykiln.errors import InputError, check_positive
+from rotarykiln.rtd.correlations import (
+    bongo_njeng_dispersion,
+    holdup_fraction,
+    sai_dispersion_number,
+    sherritt_dispersion,
+)
+from rotarykiln.rtd.dispersion import get_model
+from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
+from rotarykiln.rtd.predict import RTDPrediction, check_peclet, predict_rtd, tau_and_peclet
 
 __all__ = [
     "ModelRun",
     "bed_fill_profile",
     "bed_profile_from_case",
+    "peclet_from_case",
+    "predict_from_case",
     "rtd_run",
     "rtd_runner",
     "transport_mean_residence_time",
     "transport_run",
+    "run_section",
+    "write_bed_profile",
 ]
 
 
@@ -111,9 +125,7 @@ def transport_run(case) -> ModelRun:
     }
 
     def write(out) -> dict:
-        from rotarykiln.commands.bed import _write
-
-        return {f"transport_{k}": v for k, v in _write(profile, Path(out)).items()}
+        return {f"transport_{k}": v for k, v in write_bed_profile(profile, Path(out)).items()}
 
     return ModelRun("transport", profile, summary, write)
 
@@ -122,7 +134,6 @@ def rtd_run(case) -> ModelRun:
     """The ``rtd:`` section of a case (its predicted E(t)), solved in memory, with the transport
     model's mean residence time when the case has a ``transport:`` section (and no given
     ``rtd.mean_residence_time``)."""
-    from rotarykiln.rtd.predict import predict_from_case, run_section
 
     taus: list[float] = []
 
@@ -146,3 +157,143 @@ def rtd_runner(case, out) -> dict:
     ``out``); returns its summary."""
     run = rtd_run(case)
     return {**run.summary, **run.write(Path(out))}
+
+
+def write_bed_profile(profile, out) -> dict:
+    """Write a bed profile's ``profile.csv``, ``summary.json`` and ``profile.png`` into the folder
+    ``out``; return the summary entries naming the CSV and the figure."""
+    import matplotlib
+
+    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    write_frame_atomic(out / "profile.csv", profile.to_frame(), index=False)
+    write_json_atomic(out / "summary.json", profile.summary())
+    ax = profile.plot()
+    save_figure_atomic(out / "profile.png", ax.figure, dpi=110, bbox_inches="tight")
+    plt.close(ax.figure)
+    return {"profile_csv": str(out / "profile.csv"), "profile_png": str(out / "profile.png")}
+
+
+# --- the rtd: section of a case ------------------------------------------------------------
+
+
+def _need(value, field: str, why: str):
+    if value is None:
+        raise InputError(field, "missing", f"given ({why})")
+    return value
+
+
+def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
+    """Peclet number of a case from ``rtd.peclet`` or the chosen correlation, and its source."""
+    sec, kiln, op, mat = case.rtd, case.kiln, case.operation, case.material
+    if sec.peclet is not None:
+        check_peclet("rtd.peclet", sec.peclet)
+        return sec.peclet, "given"
+    name = sec.correlation
+    why = f"for the {name} correlation"
+    if name == "sai1990":
+        theta = sec.tracer_repose_angle or _need(mat.repose_angle, "material.repose_angle", why)
+        rho = sec.tracer_density or _need(mat.bulk_density, "material.bulk_density", why)
+        if not kiln.slope > 0:
+            raise InputError("kiln.slope", kiln.slope, f"> 0 {why}")
+        with np.errstate(all="ignore"):
+            number = float(sai_dispersion_number(theta, kiln.slope, op.speed, rho))
+            pe = 1.0 / number if number > 0 else math.inf
+        check_peclet("rtd.peclet", pe, f" (from the {name} correlation; or give rtd.peclet)")
+        return pe, name
+    if name == "sherritt2003":
+        dp = _need(mat.particle_size, "material.particle_size", why)
+        x = sec.holdup_fraction
+        if x is None:
+            feed = _need(op.feed, "operation.feed", why + " without rtd.holdup_fraction")
+            rho = _need(mat.bulk_density, "material.bulk_density", why)
+            x = holdup_fraction(feed, mean_residence_time, rho, kiln.diameter, kiln.length)
+        d = float(sherritt_dispersion(op.speed, kiln.diameter, dp, x))
+    else:
+        lifters = sec.lifters
+        if lifters.type == "none":
+            raise InputError(
+                "rtd.lifters.type", "none", f"straight or rectangular {why} (D = 0 without lifters)"
+            )
+        beta = mat.static_repose_angle or _need(mat.repose_angle, "material.repose_angle", why)
+        arm = 0.0 if lifters.type == "straight" else (lifters.arm or lifters.height)
+        area = lifter_cross_section(kiln.diameter / 2, lifters.height, beta, arm=arm)
+        d = float(
+            bongo_njeng_dispersion(
+                _need(op.feed, "operation.feed", why),
+                _need(mat.bulk_density, "material.bulk_density", why),
+                op.speed,
+                kiln.slope,
+                beta,
+                _need(mat.particle_size, "material.particle_size", why),
+                loading_lifter_area(lifters.count, area),
+                kiln.diameter,
+            )
+        )
+    if not (math.isfinite(d) and d > 0):
+        raise InputError(
+            "rtd.correlation",
+            f"{name}, which gives D = {d:.3g} m2/s for this case",
+            "a correlation giving a dispersion coefficient > 0 (check operation.feed and the "
+            "material, or give rtd.peclet)",
+        )
+    source = f" from the {name} correlation (or give rtd.peclet)"
+    _, pe = tau_and_peclet(
+        get_model(sec.model), mean_residence_time, d, kiln.length, "rtd.peclet", source
+    )
+    return pe, name
+
+
+def predict_from_case(case, *, transport: Callable | None = None) -> RTDPrediction:
+    """Predicted E(t) of the kiln of a case (its ``rtd`` section).
+
+    Parameters
+    ----------
+    case : rotarykiln.case.Case
+        Validated case with an ``rtd`` section.
+    transport : callable, optional
+        ``transport(case) -> mean residence time [s]``, used when ``rtd.mean_residence_time`` is
+        not given (the hook for the transport model).
+
+    Returns
+    -------
+    RTDPrediction
+    """
+    sec = case.rtd
+    if sec is None:
+        raise InputError("rtd", "missing", "an rtd: section in the case")
+    mrt = sec.mean_residence_time
+    if mrt is None:
+        if transport is None:
+            raise InputError(
+                "rtd.mean_residence_time",
+                "missing",
+                "given (no transport model is available to compute it)",
+            )
+        mrt = float(transport(case))
+        check_positive("mean residence time from the transport model", mrt, "s")
+    pe, source = peclet_from_case(case, mrt)
+    return predict_rtd(mrt, peclet=pe, length=case.kiln.length, model=sec.model, source=source)
+
+
+def run_section(case, out, *, transport: Callable | None = None) -> dict:
+    """Runner for ``rotarykiln run``: write rtd_prediction.csv/.png in ``out``, return a summary.
+
+    ``transport`` is passed on to :func:`predict_from_case` (the kiln layer may supply it).
+    """
+    import matplotlib.pyplot as plt
+
+    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic
+
+    pred = predict_from_case(case, transport=transport)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    pred.plot(ax)
+    ax.set_title(f"{case.name}: predicted RTD", fontsize="medium")
+    fig.tight_layout()
+    write_frame_atomic(out / "rtd_prediction.csv", pred.to_frame())
+    save_figure_atomic(out / "rtd_prediction.png", fig)
+    plt.close(fig)
+    return pred.summary()

@@ -139,9 +139,9 @@ def run_fit(args: argparse.Namespace) -> int:
 
 def run_predict(args: argparse.Namespace) -> int:
     from rotarykiln.case import load_case
+    from rotarykiln.commands.model_runs import predict_from_case
     from rotarykiln.commands.run import case_path
     from rotarykiln.commands.sweep import check_printable
-    from rotarykiln.rtd.predict import predict_from_case
 
     check_printable(args, ("case",))
     case = load_case(case_path(args.case))

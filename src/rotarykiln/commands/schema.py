@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import argparse
 
-from rotarykiln.case_io import case_json_schema
+from rotarykiln.case import case_json_schema
 from rotarykiln.commands._args import plain, print_json
 from rotarykiln.outputs import write_json_atomic
 

@@ -43,13 +43,9 @@ def run(args) -> int:
     from rotarykiln.case import Cells, Time, check_quantity, load_case
     from rotarykiln.commands.run import case_path
     from rotarykiln.kiln.from_case import kiln_from_case
-    from rotarykiln.kiln.transient.events import (
-        check_output_size,
-        output_times_bound,
-        parse_transient,
-        read_transient_file,
-    )
+    from rotarykiln.kiln.transient.events import check_output_size, output_times_bound
     from rotarykiln.kiln.transient.integrate import simulate
+    from rotarykiln.transient_file import parse_transient, read_transient_file
 
     # the ranges of the case file: a run of at most 1e10 s, at most 20,000 cells
     until = check_quantity("--until", args.until, Time)

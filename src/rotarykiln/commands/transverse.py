@@ -52,7 +52,6 @@ def run(args: argparse.Namespace) -> int:
     import numpy as np
 
     from rotarykiln.outputs import save_figure_atomic, write_frame_atomic, write_json_atomic
-    from rotarykiln.transverse.config import retort_spec_from_case
     from rotarykiln.transverse.retort import run_retort
 
     case, stem = _load(args.case)
@@ -126,3 +125,46 @@ def run(args: argparse.Namespace) -> int:
             print(f"{k:34s} {v:.6g}" if isinstance(v, float) else f"{k:34s} {v}")
         print(f"outputs written to {folder}")
     return 0
+
+
+def retort_spec_from_case(case):
+    """Build a :class:`~rotarykiln.transverse.retort.RetortSpec` from a validated Case.
+
+    Raises
+    ------
+    InputError
+        When the case has no ``transverse`` section or no ``bed.fill``.
+    """
+    from rotarykiln.transverse.retort import RetortSpec
+
+    sec = case.transverse
+    if sec is None:
+        raise InputError("transverse", message="transverse: missing (required section)")
+    if case.bed is None or case.bed.mean_fill is None:
+        raise InputError("bed.fill", message="bed.fill: missing (required for transverse)")
+    kw = dict(
+        name=case.name,
+        drum_diameter=case.kiln.diameter,
+        omega=case.operation.speed,
+        fill=case.bed.mean_fill,
+        shale_size=sec.shale.mean_size,
+        ash_size=sec.ash.mean_size,
+        shale_temperature=sec.shale.temperature,
+        ash_temperature=sec.ash.temperature,
+        shale_to_ash=sec.shale_to_ash,
+        duration=sec.duration,
+        distribution=sec.distribution,
+        voidage=sec.voidage,
+        emissivity=sec.emissivity,
+        balance=sec.balance,
+        layers=sec.grid.layers,
+        zones=sec.grid.zones,
+        segregation=sec.segregation,
+        snapshot_times=tuple(sec.snapshot_times),
+    )
+    for feed, prefix in ((sec.shale, "shale"), (sec.ash, "ash")):
+        if feed.bulk_density is not None:
+            kw[f"{prefix}_bulk_density"] = feed.bulk_density
+        if feed.heat_capacity is not None:
+            kw[f"{prefix}_cp"] = feed.heat_capacity
+    return RetortSpec(**kw)

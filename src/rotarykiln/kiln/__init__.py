@@ -1,10 +1,11 @@
-"""The steady kiln model: one model for every kiln (inert or reacting, air-heated or fired).
+"""The kiln model: one model for every kiln (inert or reacting, air-heated, fired, jacketed or
+electrically heated; steady and transient).
 
-Entry points: :class:`Kiln` (inputs; :meth:`Kiln.inert` for a bed that does not react),
-:func:`solve_kiln` (Newton on the discretised balances), :class:`KilnSolution` (profiles,
-balances, summary), :func:`~rotarykiln.kiln.from_case.kiln_from_case` and
-:func:`~rotarykiln.commands.kiln_runs.run_kiln_case` (from a case file),
-:mod:`rotarykiln.kiln.tscheng` (Tscheng's validation kilns).
+Entry points: :class:`Kiln` (the inputs as a tree; :meth:`Kiln.inert` for a bed that does not
+react), :func:`solve_kiln` (Newton on the discretised balances), :class:`KilnSolution`
+(profiles, balances, summary), :func:`~rotarykiln.kiln.from_case.kiln_from_case` (from a case
+file), :func:`~rotarykiln.kiln.transient.integrate.simulate` (in time). The layout:
+docs/dev/architecture.md.
 """
 
 from rotarykiln.kiln.inputs import Closures, Kiln

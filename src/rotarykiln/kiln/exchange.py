@@ -94,15 +94,20 @@ class FreeboardGas(Protocol):
 
     mass_flux: np.ndarray | float
 
-    def transport(self, T) -> tuple[np.ndarray, np.ndarray]: ...
+    def transport(self, T) -> tuple[np.ndarray, np.ndarray]:
+        """Conductivity (W/(m K)) and viscosity (Pa s) at ``T`` (K)."""
 
-    def conductivity(self, T) -> np.ndarray: ...
+    def conductivity(self, T) -> np.ndarray:
+        """Conductivity at ``T`` (K), W/(m K)."""
 
-    def density(self, T) -> np.ndarray: ...
+    def density(self, T) -> np.ndarray:
+        """Density at ``T`` (K), kg/m3."""
 
-    def cp(self, T) -> np.ndarray: ...
+    def cp(self, T) -> np.ndarray:
+        """Specific heat at ``T`` (K), J/(kg K)."""
 
-    def partial_pressures(self) -> tuple: ...
+    def partial_pressures(self) -> tuple:
+        """H2O and CO2 partial pressures, Pa."""
 
 
 @dataclass(frozen=True)
@@ -124,18 +129,23 @@ class TableGas:
     mass_flux: np.ndarray | float
 
     def transport(self, T):
+        """Conductivity (W/(m K)) and viscosity (Pa s) at ``T`` (K)."""
         return self.table.conductivity(T), self.table.viscosity(T)
 
     def conductivity(self, T):
+        """Conductivity at ``T`` (K), W/(m K)."""
         return self.table.conductivity(T)
 
     def density(self, T):
+        """Density at ``T`` (K) and the gas pressure, kg/m3."""
         return self.table.density(T, self.pressure)
 
     def cp(self, T):
+        """Specific heat at ``T`` (K), J/(kg K)."""
         return self.table.cp(T)
 
     def partial_pressures(self):
+        """H2O and CO2 partial pressures, Pa."""
         return self.table.x_h2o * self.pressure, self.table.x_co2 * self.pressure
 
 
@@ -482,9 +492,41 @@ def gas_conductance(co: dict, geometry, t_max, radiation_scale=1.0):
     r"""Upper bound of the gas's heat conductance to its surroundings, W/(m K) per metre.
 
     Convection to the exposed wall and the bed surface plus radiation bounded by
-    :math:`4\sigma\varepsilon_g T_{max}^3 (A_w + L_c)` (the secant of
-    :math:`\sigma(T_g^4 - T_s^4)` never exceeds it): the number of transfer units of a cell
-    (:func:`upwind_weight`) is this times the cell length over the gas's heat capacity flow.
+    :math:`4\sigma\varepsilon_g T_{max}^3 (A_w + L_c)`: a grey gas exchanges at most
+    :math:`\varepsilon_g\sigma(T_g^4 - T_s^4)` per unit area with the surfaces it sees, and
+    the secant of :math:`\sigma(T_g^4 - T_s^4)` never exceeds :math:`4\sigma T_{max}^3`. The
+    number of transfer units of a cell (:func:`upwind_weight`) is this times the cell length
+    over the gas's heat capacity flow.
+
+    Parameters
+    ----------
+    co : dict
+        The coefficients of :meth:`CrossSectionExchange.coefficients`: ``h_gw``, ``h_gb``
+        (W/(m2 K)) and ``eps_gas`` (-), per cell.
+    geometry : Grid
+        Cell geometry: ``exposed_wall`` and ``chord`` (m2/m, per cell).
+    t_max : float or array, K
+        The highest temperature of the gas and its surroundings in the cell.
+    radiation_scale : float, -
+        Factor on the radiation (the continuation's ramp; 1: full radiation).
+
+    Returns
+    -------
+    float or array, W/(m K)
+        Per metre of kiln, per cell.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> geometry = SimpleNamespace(exposed_wall=1.0, chord=0.5)
+    >>> co = {"h_gw": 10.0, "h_gb": 20.0, "eps_gas": 0.2}
+    >>> round(float(gas_conductance(co, geometry, 1000.0)), 2)  # 20 convection + 68.04 radiation
+    88.04
+
+    References
+    ----------
+    H.C. Hottel, A.F. Sarofim, Radiative Transfer, McGraw-Hill (1967) (exchange of a grey gas
+    with its enclosure).
     """
     g = geometry
     k = co["h_gw"] * g.exposed_wall + co["h_gb"] * g.chord
@@ -507,10 +549,27 @@ def upwind_weight(ntu):
     units (a large drum swept by a little gas) lets its outlet face overshoot the wall and bed it
     exchanges with, and the faces oscillate from cell to cell.
 
+    Parameters
+    ----------
+    ntu : float or array, -
+        Number of transfer units of the cell: its conductance to the surroundings times its
+        length over the stream's heat capacity flow (:func:`gas_conductance`).
+
+    Returns
+    -------
+    float or array, -
+        Weight :math:`\theta` of the outlet face, in [0.5, 1).
+
     Examples
     --------
     >>> [round(float(upwind_weight(n)), 4) for n in (0.0, 1.0, 2.0, 50.0)]
     [0.5, 0.5, 0.6565, 0.98]
+
+    References
+    ----------
+    S.V. Patankar, Numerical Heat Transfer and Fluid Flow, Hemisphere (1980), ch. 5 (the
+    exponential scheme); F.P. Incropera et al., Fundamentals of Heat and Mass Transfer, 6th ed.
+    (2007), section 8.3 (a stream at constant surface temperature: exponential approach).
     """
     n = np.maximum(np.asarray(ntu, dtype=float), 0.0)
     safe = np.maximum(n, 1.0)

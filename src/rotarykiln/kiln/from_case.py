@@ -11,7 +11,8 @@ model as follows:
   named by ``solid`` or ``name`` fills the gaps);
 - ``bed`` (fill or residence time, axial dispersion) or ``transport`` (the Kramers/Scott bed
   profile; with ``chemistry`` the Kramers bed depth is solved with the balances, so the
-  profile follows the mass the bed loses);
+  profile follows the mass the bed loses, or keeps the fresh feed's volume: ``volume``,
+  ``shrinkage``);
 - ``gas`` (a hot-gas or sweep-gas inlet) or ``burner`` (fuel and air, burnt by
   :func:`rotarykiln.kiln.combustion.flame.fire`);
 - ``wall`` (lining layers, a constant U or a heating jacket; heater zones), ``closures``,
@@ -41,19 +42,18 @@ from rotarykiln.kiln.inputs import (
     Wall,
 )
 from rotarykiln.kiln.wall.lining import HeaterZone
+from rotarykiln.materials.gas import AIR
 from rotarykiln.materials.lining import Layer
 
 __all__ = [
     "burner_from_case",
     "closures_from_case",
+    "default_origins",
     "jacket_from_case",
     "kiln_from_case",
     "layers_from_case",
     "mechanism_from_case",
 ]
-
-AIR = "O2:0.2095, N2:0.7808, AR:0.0097"
-"""Default composition of an inlet gas (mole fractions): dry air."""
 
 
 def kiln_from_case(case) -> tuple[Kiln, int]:
@@ -496,7 +496,8 @@ def _bed_dispersion(case, kiln: Kiln) -> float:
 
 def _kramers_bed(case, density):
     """The :class:`KramersBed` of a ``transport:`` section, and the fill and solids speed of
-    its constant-flow profile (the solve's starting point)."""
+    its constant-flow profile (the solve's starting point: the Saeman profile of the fresh
+    feed's volume flow, the feed over the bulk density, whatever the volume law)."""
     from rotarykiln.commands.model_runs import bed_profile_from_case
     from rotarykiln.kiln.bed.depth import KramersBed
 
@@ -518,11 +519,38 @@ def _kramers_bed(case, density):
         case.material.repose_angle,
         density,
         t.dam_height,
+        **_volume_law(case, density),
     )
     profile = bed_profile_from_case(case)
     fill = float(np.mean(profile.fill))
     velocity = case.kiln.length / float(profile.mean_residence_time)
     return bed, fill, velocity
+
+
+def _volume_law(case, density) -> dict:
+    r"""The volume law of the solved bed depth (``transport.volume``, ``transport.shrinkage``;
+    :class:`~rotarykiln.kiln.bed.depth.KramersBed`): nothing for ``bulk`` (the flow over the
+    bulk density, the law's default); for ``fresh_feed`` the fresh feed's volumetric flow
+    :math:`\dot V_0 = \dot m_0/\rho_b` (m3/s), its species flows (kg/s) and the shrinkage.
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> law = _volume_law(load_case(builtin_case_path("rotary_pyrolysis")), 279.5)
+    >>> law["volume_law"], round(law["volume_flow0"] * 3600, 5), law["shrinkage"]
+    ('fresh_feed', 0.10733, 0.0)
+    """
+    t = case.transport
+    if t.volume == "bulk":
+        return {}
+    feed = case.operation.feed
+    return dict(
+        volume_law=t.volume,
+        volume_flow0=feed / density,
+        feed=tuple((n, w * feed) for n, w in case.material.composition.items()),
+        shrinkage=t.shrinkage,
+    )
 
 
 def layers_from_case(lining, section: str = "wall") -> tuple[Layer, ...]:
@@ -555,3 +583,24 @@ def layers_from_case(lining, section: str = "wall") -> tuple[Layer, ...]:
     if not layers:
         raise InputError(f"{section}.lining", "[]", "a list of at least one layer")
     return layers
+
+
+def default_origins(case) -> dict[str, str]:
+    """Case-file field -> where the model's value comes from, for the inputs the case leaves
+    to a default (what the warnings of a run say of a value the case did not give).
+
+    Examples
+    --------
+    >>> from rotarykiln.case import load_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> default_origins(load_case(builtin_case_path("tscheng_A16")))
+    {}
+    """
+    m = case.material
+    if m.particle_size is not None:
+        return {}
+    field = "material.particle_size"
+    name = _library_name(m.solid or m.name)
+    if name is None:
+        return {field: f"the model's default particle size: give {field}"}
+    return {field: f"the library default for {name}: give {field}"}

@@ -34,6 +34,12 @@ For speed the species fits (all on the breakpoints of
 :data:`~rotarykiln.materials.gas.T_GRID`) are stacked on a last axis: one interval search and
 one Horner evaluation give every species at once (the constant-c_p species are stacked as
 polynomials too, c_p constant and h linear).
+
+References
+----------
+F. Herning, L. Zipperer, Gas- und Wasserfach 79 (1936) 49-54, 69-73 (viscosity of gas
+mixtures); B.E. Poling, J.M. Prausnitz, J.P. O'Connell, The Properties of Gases and Liquids,
+5th ed., McGraw-Hill (2001), ch. 9-10 (mixing rules of viscosity and conductivity).
 """
 
 from __future__ import annotations
@@ -286,8 +292,22 @@ def mixture_of(names, species: SpeciesTable | None = None, dissociation=None) ->
     """The gas mixture model of the gas species ``names`` of ``species``.
 
     A plain :class:`GasMixture` when every species has a Cantera table or is a species of the
-    built-in table without a c_p(T); otherwise a :class:`ThermoGasMixture`. ``dissociation``:
-    the dissociation heat of a burner's products, carried by CO2 and H2O (or None).
+    built-in table without a c_p(T); otherwise a :class:`ThermoGasMixture`.
+
+    Parameters
+    ----------
+    names : sequence of str
+        Gas species, names of ``species``.
+    species : SpeciesTable, optional
+        Species data (default: the built-in table).
+    dissociation : DissociationHeat or None
+        The dissociation heat of a burner's products, carried by CO2 and H2O.
+
+    Returns
+    -------
+    GasMixture
+        Property model: enthalpy (J/kg), c_p (J/(kg K)), conductivity (W/(m K)) and viscosity
+        (Pa s) mixed by composition.
 
     Examples
     --------
@@ -296,6 +316,10 @@ def mixture_of(names, species: SpeciesTable | None = None, dissociation=None) ->
     >>> g = mixture_of(("N2", "tar"))
     >>> round(float(g.species_cp(np.array([700.0]))[0, 1]))   # -100 + 4.4 T - 1.57e-3 T^2
     2211
+
+    References
+    ----------
+    Mixing rules: see the module (ideal-gas mixing; Herning & Zipperer 1936).
     """
     sp = species or default_species()
     builtin = default_species()
@@ -342,18 +366,23 @@ class MixtureGas:
         return self.mixture.mole_fractions(self.flows)
 
     def transport(self, T):
+        """Conductivity (W/(m K)) and viscosity (Pa s) of the cells at ``T`` (K)."""
         return self.mixture.transport_x(T, self._x)
 
     def conductivity(self, T):
+        """Conductivity of the cells at ``T`` (K), W/(m K)."""
         return self.mixture.transport_x(T, self._x, viscosity=False)
 
     def density(self, T):
+        """Density of the cells at ``T`` (K), kg/m3 (ideal gas)."""
         return self.pressure * self.mixture.mean_molar_mass(self.flows) / (R_UNIVERSAL * T)
 
     def cp(self, T):
+        """Specific heat of the cells at ``T`` (K), J/(kg K)."""
         return np.einsum("...i,...i->...", self.mixture.species_cp(T), self.flows) / self.total
 
     def partial_pressures(self):
+        """H2O and CO2 partial pressures of the cells, Pa (0 for a species not in the gas)."""
         names = self.mixture.names
         x = self._x
         zero = 0.0 * x[..., 0]

@@ -58,11 +58,30 @@ class Grid:
 def section_fields(cs: CrossSection, radius: float) -> dict:
     """The cross-section fields of a :class:`Grid` (all but fill) from a :class:`CrossSection`.
 
+    Parameters
+    ----------
+    cs : CrossSection
+        Bed cross-section of each cell (from its fill).
+    radius : float, m
+        Inner radius of the kiln.
+
+    Returns
+    -------
+    dict
+        Arrays over cells: ``half_angle``, ``full_angle`` (rad), ``chord``, ``exposed_wall``,
+        ``covered_wall`` (m2/m), ``freeboard_area``, ``bed_area`` (m2),
+        ``hydraulic_diameter``, ``depth`` and ``beam_length`` (m).
+
     Examples
     --------
     >>> f = section_fields(CrossSection.from_fill(0.15, 0.1), 0.1)
     >>> round(float(f["chord"]), 4), round(float(f["beam_length"]), 4)
     (0.1622, 0.1506)
+
+    References
+    ----------
+    Segment geometry: :class:`rotarykiln.geometry.CrossSection`; mean beam length of the
+    freeboard: J.P. Gorog, J.K. Brimacombe, T.N. Adams, Metall. Trans. B 12B (1981) 55-70.
     """
     return dict(
         half_angle=cs.theta,
@@ -101,18 +120,28 @@ def cell_grid(
     layers : tuple of Layer
         Lining, inner to outer (empty: no lining radii beyond the inner surface).
     heat_release : float, W
-        Heat released in the gas over the kiln, distributed by ``heat_release_profile``
-        (callable of z, normalised here; None: uniform).
+        Heat released in the gas over the kiln.
+    heat_release_profile : callable, optional
+        Weights of the heat release at the cell centres z (m), normalised here (None:
+        uniform).
 
     Returns
     -------
     Grid
+        Cell geometry (m, m2/m, m2, rad per cell) and the heat release (W/m per cell).
 
     Examples
     --------
     >>> g = cell_grid(2.0, 0.1, 4, lambda z: np.full_like(z, 0.15))
     >>> round(float(g.chord[0]), 4), g.radii.shape
     (0.1622, (1, 4))
+
+    References
+    ----------
+    Segment geometry: :class:`rotarykiln.geometry.CrossSection`; mean beam length: J.P. Gorog,
+    J.K. Brimacombe, T.N. Adams, Metall. Trans. B 12B (1981) 55-70; the box scheme on these
+    cells: H.B. Keller, in Numerical Solution of Partial Differential Equations II, Academic
+    Press (1971) 327-350.
     """
     from rotarykiln.errors import InputError
 

@@ -229,7 +229,9 @@ class KilnResidual:
         jacket = k.wall.jacket
         if jacket is not None:
             hot = max(hot, float(jacket.inlet_temperature))
-        set_points = [z.shell_temperature for z in k.wall.heaters if z.shell_temperature is not None]
+        set_points = [
+            z.shell_temperature for z in k.wall.heaters if z.shell_temperature is not None
+        ]
         return max([hot, *set_points])
 
     def reference_heat(self) -> float:
@@ -284,20 +286,20 @@ class KilnResidual:
 
     def volume_flow(self, qb):
         """Volumetric bed flow (m3/s) of the species flows ``qb`` (kg/s, bed species on the
-        last axis): the bed-depth model's own law when it has one (e.g. a bed that keeps its
-        volume as it pyrolyses, kiln/pyrolysis.py), else the flow over the bulk density."""
-        law = getattr(self.depth, "volume_flow", None)
-        if law is not None:
-            return law(self.bed_names, qb)
-        return qb.sum(-1) / self.kiln.bed.bulk_density
+        last axis): the solved bed depth's volume law
+        (:meth:`~rotarykiln.kiln.bed.depth.KramersBed.volume_flow`: the flow over the bulk
+        density, or the fresh feed's volume), else the flow over the bulk density."""
+        if self.depth is None:
+            return qb.sum(-1) / self.kiln.bed.bulk_density
+        return self.depth.volume_flow(self.bed_names, qb)
 
     def bed_density(self, qb):
-        """Bulk density of the bed (kg/m3) at the species flows ``qb``: the kiln's, or mass
-        over volume flow with a bed-depth model's own volume law."""
-        if getattr(self.depth, "volume_flow", None) is None:
+        """Bulk density of the bed (kg/m3) at the species flows ``qb``: the kiln's, or that of
+        the solved bed depth's volume law
+        (:meth:`~rotarykiln.kiln.bed.depth.KramersBed.bed_density`)."""
+        if self.depth is None:
             return self.kiln.bed.bulk_density
-        q = np.maximum(qb, 0.0)
-        return q.sum(-1) / np.maximum(self.volume_flow(q), 1e-300)
+        return self.depth.bed_density(self.bed_names, qb)
 
     # --- closures -------------------------------------------------------------------------------
     def gas_state(self, g_mean, geo=None) -> MixtureGas:

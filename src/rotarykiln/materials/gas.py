@@ -42,6 +42,9 @@ from rotarykiln.errors import InputError, check_positive, warn_out_of_range
 from rotarykiln.materials import _cache
 
 __all__ = [
+    "AIR",
+    "AIR_MOLAR_MASS",
+    "AIR_O2",
     "GasPropertyTable",
     "gas_table",
     "air_table",
@@ -52,6 +55,14 @@ __all__ = [
     "fuel_data",
     "molar_mass",
 ]
+
+#: Dry air by mole (the standard atmosphere's N2, O2 and Ar; CO2 and traces counted as N2):
+#: the one air of the package, of the burner's air streams and of an air-heated kiln's gas.
+AIR = "O2:0.2095, N2:0.7808, AR:0.0097"
+#: O2 mole fraction of :data:`AIR`.
+AIR_O2 = 0.2095
+#: Molar mass of :data:`AIR`, kg/mol (O2 31.998, N2 28.0134, Ar 39.948 g/mol).
+AIR_MOLAR_MASS = 0.2095 * 0.031998 + 0.7808 * 0.0280134 + 0.0097 * 0.039948
 
 R_UNIVERSAL = 8.314462618  # J/(mol K)
 T_REF = 298.15  # K
@@ -367,8 +378,8 @@ def gas_table(composition) -> GasPropertyTable:
 
 
 def air_table() -> GasPropertyTable:
-    """Property table of dry air (O2 0.21, N2 0.78, Ar 0.01 by mole)."""
-    return gas_table("O2:0.2095, N2:0.7808, AR:0.0097")
+    """Property table of dry air (:data:`AIR`)."""
+    return gas_table(AIR)
 
 
 @dataclass(frozen=True)
@@ -416,7 +427,7 @@ def burn_fuel(
     >>> round(b.heat_release / 1.0e-3 / 1e6, 1)  # MJ per kg of CH4: the LHV
     50.0
     >>> round(b.adiabatic_temperature, -1)
-    2180.0
+    2190.0
 
     References
     ----------
@@ -469,7 +480,7 @@ def _burn_state(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, ga
     # state: both streams can share one solution.
     gas.TPX = fuel_temperature, 101325.0, fuel_x
     qf = ct.Quantity(gas, mass=fuel_flow, constant="HP")
-    gas.TPX = air_temperature, 101325.0, "O2:0.21, N2:0.79"
+    gas.TPX = air_temperature, 101325.0, AIR
     qa = ct.Quantity(gas, mass=air_flow, constant="HP")
     mix = qf + qa
     t_in = float(mix.T)

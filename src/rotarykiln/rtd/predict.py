@@ -1,9 +1,8 @@
 r"""Predicted RTD of a kiln: a mean residence time and a Peclet number give E(t).
 
-The mean residence time comes from the case (``rtd.mean_residence_time``) or from a transport
-model passed in as a callable (``transport(case) -> seconds``; the ``kiln`` layer wires the
-transport package here, this package does not import it). The Peclet number is given
-(``rtd.peclet``) or follows from a dispersion correlation (:mod:`rotarykiln.rtd.correlations`):
+The mean residence time and the Peclet number are given, or the Peclet number follows from a
+dispersion coefficient D (:mod:`rotarykiln.rtd.correlations`) through :func:`tau_and_peclet`
+(a case's ``rtd:`` section is read by :mod:`rotarykiln.commands.model_runs`):
 
 .. math::
 
@@ -16,7 +15,6 @@ that the mean of the predicted E(t) is the given mean residence time.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -27,17 +25,10 @@ if TYPE_CHECKING:
 from scipy import optimize
 
 from rotarykiln.errors import InputError, check_positive
-from rotarykiln.rtd.correlations import (
-    bongo_njeng_dispersion,
-    holdup_fraction,
-    sai_dispersion_number,
-    sherritt_dispersion,
-)
 from rotarykiln.rtd.dispersion import SHAPE_RANGE, get_model
-from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
 from rotarykiln.tables import with_units
 
-__all__ = ["RTDPrediction", "peclet_from_case", "predict_from_case", "predict_rtd", "run_section"]
+__all__ = ["RTDPrediction", "check_peclet", "predict_rtd", "tau_and_peclet"]
 
 
 @dataclass(frozen=True)
@@ -145,14 +136,14 @@ def predict_rtd(
     if isinstance(n_points, bool) or not isinstance(n_points, int) or not 2 <= n_points <= 100_000:
         raise InputError("n_points", n_points, "a whole number in [2, 100000]")
     if peclet is not None:
-        _check_peclet("peclet", peclet)
+        check_peclet("peclet", peclet)
         tau = mean_residence_time / spec.moments(1.0, peclet)[0]
     else:
         check_positive("dispersion", dispersion, "m2/s")
         if length is None:
             raise InputError("length", None, "given with dispersion")
         check_positive("length", length, "m")
-        tau, peclet = _tau_and_peclet(spec, mean_residence_time, dispersion, length)
+        tau, peclet = tau_and_peclet(spec, mean_residence_time, dispersion, length)
     mean, var = spec.moments(tau, peclet)
     if t is None:
         sd = np.sqrt(var)
@@ -172,7 +163,7 @@ def predict_rtd(
     )
 
 
-def _check_peclet(field: str, peclet, source: str = "") -> None:
+def check_peclet(field: str, peclet, source: str = "") -> None:
     """Refuse a Peclet number outside the models' range (:data:`~.dispersion.SHAPE_RANGE`)."""
     lo, hi = SHAPE_RANGE
     if not (isinstance(peclet, int | float) and lo <= peclet <= hi):
@@ -180,12 +171,47 @@ def _check_peclet(field: str, peclet, source: str = "") -> None:
         raise InputError(field, f"{shown}{source}", f"in [{lo:g}, {hi:g}]")
 
 
-def _tau_and_peclet(
+def tau_and_peclet(
     spec, mrt: float, dispersion: float, length: float, field: str = "peclet", source: str = ""
 ) -> tuple[float, float]:
-    """Space time and Peclet number of a model whose mean is ``mrt`` with D = ``dispersion``:
-    Pe = L^2/(D tau) and tau mean(Pe) = mrt, solved over the Peclet numbers of
-    :data:`~.dispersion.SHAPE_RANGE` in logarithms (no overflow for any D, L and mrt > 0)."""
+    r"""Space time and Peclet number of a model whose mean is ``mrt`` with D = ``dispersion``.
+
+    .. math:: Pe = \frac{L^2}{D\,\tau},\qquad \tau\,\bar\theta(Pe) = \bar t
+
+    solved over the Peclet numbers of :data:`~.dispersion.SHAPE_RANGE` in logarithms (no
+    overflow for any D, L and mrt > 0).
+
+    Parameters
+    ----------
+    spec : object
+        The dispersion model (:func:`rotarykiln.rtd.dispersion.get_model`).
+    mrt : float, s
+        Mean residence time.
+    dispersion : float, m2/s
+        Axial dispersion coefficient.
+    length : float, m
+        Kiln length.
+    field : str
+        Field named in an error.
+    source : str
+        Where D came from, for an error.
+
+    Returns
+    -------
+    (float, float)
+        Space time tau (s) and Peclet number (dimensionless).
+
+    Examples
+    --------
+    >>> from rotarykiln.rtd.dispersion import get_model
+    >>> tau, pe = tau_and_peclet(get_model("open-open"), 1200.0, 1e-4, 2.0)
+    >>> round(pe, 2), round(tau * (1 + 2 / pe), 6)  # Pe^2 - Pe L^2/(D mrt) - 2 L^2/(D mrt) = 0
+    (35.23, 1200.0)
+
+    References
+    ----------
+    O. Levenspiel, Chemical Reaction Engineering, 3rd ed. (1999), ch. 13.
+    """
     log_l2_d = 2.0 * math.log(length) - math.log(dispersion)
 
     def excess(log_pe):  # log(tau mean(Pe) / mrt), decreasing in Pe
@@ -204,122 +230,3 @@ def _tau_and_peclet(
     log_pe = optimize.brentq(excess, lo, hi, xtol=1e-13, rtol=1e-14)
     peclet = min(max(math.exp(log_pe), SHAPE_RANGE[0]), SHAPE_RANGE[1])
     return mrt / spec.moments(1.0, peclet)[0], peclet
-
-
-def _need(value, field: str, why: str):
-    if value is None:
-        raise InputError(field, "missing", f"given ({why})")
-    return value
-
-
-def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
-    """Peclet number of a case from ``rtd.peclet`` or the chosen correlation, and its source."""
-    sec, kiln, op, mat = case.rtd, case.kiln, case.operation, case.material
-    if sec.peclet is not None:
-        _check_peclet("rtd.peclet", sec.peclet)
-        return sec.peclet, "given"
-    name = sec.correlation
-    why = f"for the {name} correlation"
-    if name == "sai1990":
-        theta = sec.tracer_repose_angle or _need(mat.repose_angle, "material.repose_angle", why)
-        rho = sec.tracer_density or _need(mat.bulk_density, "material.bulk_density", why)
-        if not kiln.slope > 0:
-            raise InputError("kiln.slope", kiln.slope, f"> 0 {why}")
-        with np.errstate(all="ignore"):
-            number = float(sai_dispersion_number(theta, kiln.slope, op.speed, rho))
-            pe = 1.0 / number if number > 0 else math.inf
-        _check_peclet("rtd.peclet", pe, f" (from the {name} correlation; or give rtd.peclet)")
-        return pe, name
-    if name == "sherritt2003":
-        dp = _need(mat.particle_size, "material.particle_size", why)
-        x = sec.holdup_fraction
-        if x is None:
-            feed = _need(op.feed, "operation.feed", why + " without rtd.holdup_fraction")
-            rho = _need(mat.bulk_density, "material.bulk_density", why)
-            x = holdup_fraction(feed, mean_residence_time, rho, kiln.diameter, kiln.length)
-        d = float(sherritt_dispersion(op.speed, kiln.diameter, dp, x))
-    else:
-        lifters = sec.lifters
-        if lifters.type == "none":
-            raise InputError(
-                "rtd.lifters.type", "none", f"straight or rectangular {why} (D = 0 without lifters)"
-            )
-        beta = mat.static_repose_angle or _need(mat.repose_angle, "material.repose_angle", why)
-        arm = 0.0 if lifters.type == "straight" else (lifters.arm or lifters.height)
-        area = lifter_cross_section(kiln.diameter / 2, lifters.height, beta, arm=arm)
-        d = float(
-            bongo_njeng_dispersion(
-                _need(op.feed, "operation.feed", why),
-                _need(mat.bulk_density, "material.bulk_density", why),
-                op.speed,
-                kiln.slope,
-                beta,
-                _need(mat.particle_size, "material.particle_size", why),
-                loading_lifter_area(lifters.count, area),
-                kiln.diameter,
-            )
-        )
-    if not (math.isfinite(d) and d > 0):
-        raise InputError(
-            "rtd.correlation",
-            f"{name}, which gives D = {d:.3g} m2/s for this case",
-            "a correlation giving a dispersion coefficient > 0 (check operation.feed and the "
-            "material, or give rtd.peclet)",
-        )
-    source = f" from the {name} correlation (or give rtd.peclet)"
-    _, pe = _tau_and_peclet(
-        get_model(sec.model), mean_residence_time, d, kiln.length, "rtd.peclet", source
-    )
-    return pe, name
-
-
-def predict_from_case(case, *, transport: Callable | None = None) -> RTDPrediction:
-    """Predicted E(t) of the kiln of a case (its ``rtd`` section).
-
-    Parameters
-    ----------
-    case : rotarykiln.case.Case
-        Validated case with an ``rtd`` section.
-    transport : callable, optional
-        ``transport(case) -> mean residence time [s]``, used when ``rtd.mean_residence_time`` is
-        not given (the hook for the transport model).
-
-    Returns
-    -------
-    RTDPrediction
-    """
-    sec = case.rtd
-    if sec is None:
-        raise InputError("rtd", "missing", "an rtd: section in the case")
-    mrt = sec.mean_residence_time
-    if mrt is None:
-        if transport is None:
-            raise InputError(
-                "rtd.mean_residence_time",
-                "missing",
-                "given (no transport model is available to compute it)",
-            )
-        mrt = float(transport(case))
-        check_positive("mean residence time from the transport model", mrt, "s")
-    pe, source = peclet_from_case(case, mrt)
-    return predict_rtd(mrt, peclet=pe, length=case.kiln.length, model=sec.model, source=source)
-
-
-def run_section(case, out, *, transport: Callable | None = None) -> dict:
-    """Runner for ``rotarykiln run``: write rtd_prediction.csv/.png in ``out``, return a summary.
-
-    ``transport`` is passed on to :func:`predict_from_case` (the kiln layer may supply it).
-    """
-    import matplotlib.pyplot as plt
-
-    from rotarykiln.outputs import save_figure_atomic, write_frame_atomic
-
-    pred = predict_from_case(case, transport=transport)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    pred.plot(ax)
-    ax.set_title(f"{case.name}: predicted RTD", fontsize="medium")
-    fig.tight_layout()
-    write_frame_atomic(out / "rtd_prediction.csv", pred.to_frame())
-    save_figure_atomic(out / "rtd_prediction.png", fig)
-    plt.close(fig)
-    return pred.summary()

@@ -28,6 +28,7 @@ __all__ = [
     "run_chapter5",
 ]
 
+
 def _study() -> dict:
     """The study of src/rotarykiln/data/ahmad2006/chapter5_study.yaml (README.md beside it)."""
     path = resources.files("rotarykiln") / "data" / "ahmad2006" / "chapter5_study.yaml"

@@ -92,3 +92,69 @@ def test_refused(transport, match):
             d["transport"][k] = v
     with pytest.raises(InputError, match=match):
         kiln_from_case(parse_case(d))
+
+
+@pytest.mark.parametrize(
+    ("transport", "match"),
+    [
+        ({"volume": "fresh"}, "transport.volume"),
+        ({"volume": "fresh_feed", "shrinkage": 1.0}, "transport.shrinkage"),
+        ({"volume": "fresh_feed", "shrinkage": "-5 %"}, "transport.shrinkage"),
+        ({"shrinkage": "30 %"}, "transport.shrinkage: 0.3 is not 0 with volume: bulk"),
+    ],
+)
+def test_a_bad_volume_law_is_refused_naming_its_field(transport, match):
+    with pytest.raises(InputError, match=match) as err:
+        parse_case(_case(**transport))
+    assert "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize(
+    ("law", "match"),
+    [
+        (dict(volume_law="constant"), "transport.volume"),
+        (dict(volume_law="fresh_feed"), "transport.volume .the fresh feed's volume flow."),
+        (dict(volume_law="fresh_feed", volume_flow0=1e-5, shrinkage=1.2), "transport.shrinkage"),
+        (dict(shrinkage=0.3), "transport.shrinkage"),
+        (dict(volume_law="fresh_feed", volume_flow0=1e-5, shrinkage=0.3), "operation.feed"),
+    ],
+)
+def test_a_bad_volume_law_of_the_depth_is_refused(law, match):
+    from rotarykiln.kiln.bed.depth import KramersBed
+
+    with pytest.raises(InputError, match=match):
+        KramersBed(0.2, 0.2, 0.05, 0.6, 300.0, 0.025, **law)
+
+
+def test_the_volume_law_is_a_field_of_the_depth():
+    # bulk (default): the flow over the bulk density, the kiln's own (one density); fresh_feed:
+    # the fresh feed's volume all along, the bed density falling with the mass that leaves
+    kiln, _ = kiln_from_case(parse_case(_case()))
+    depth = kiln.bed.depth
+    assert depth.volume_law == "bulk" and depth.density == kiln.bed.bulk_density
+    kiln, _ = kiln_from_case(parse_case(_case(volume="fresh_feed", shrinkage="20 %")))
+    depth = kiln.bed.depth
+    feed = kiln.feed.flows
+    assert depth.volume_law == "fresh_feed" and depth.shrinkage == pytest.approx(0.2)
+    assert depth.volume_flow0 == pytest.approx(sum(feed.values()) / kiln.bed.bulk_density)
+    names = tuple(feed)
+    fresh = np.array([[feed[n] for n in names]])
+    assert depth.volume_flow(names, fresh)[0] == pytest.approx(depth.volume_flow0)
+    assert depth.bed_density(names, fresh)[0] == pytest.approx(kiln.bed.bulk_density)
+    gone = np.zeros_like(fresh)  # every fed species converted: 20 % of the volume lost
+    assert depth.volume_flow(names, gone)[0] == pytest.approx(0.8 * depth.volume_flow0)
+    with pytest.raises(InputError, match="material.bulk_density"):
+        kiln.replace(bed__bulk_density=2.0 * kiln.bed.bulk_density)
+
+
+def test_a_bed_at_the_fresh_feed_volume_stays_deep_and_moves_faster(calcining):
+    # the limestone loses 44 % of its mass as CO2: at the fresh feed's volume the calcined bed
+    # keeps the feed's volume flow (its density falls), where the bulk law's flow falls with the
+    # mass; a larger volume flow runs deeper (Kramers: K ~ q) but faster (tau ~ A / q), so the
+    # solids leave sooner
+    bulk = calcining
+    fresh = run_kiln_case(parse_case(_case(volume="fresh_feed")))
+    assert abs(fresh.energy_closure) < 1e-6 and max(fresh.element_closure.values()) < 1e-8
+    assert fresh.residence_time < bulk.residence_time
+    calcined = (bulk.z > 2.5) & (bulk.z < 3.5)
+    assert fresh.fluxes["bed_depth"][calcined].mean() > bulk.fluxes["bed_depth"][calcined].mean()

@@ -75,8 +75,8 @@ def test_case_key_of_the_reacting_kiln():
 def _tracer_cdf(kiln, n, pulse=30.0):
     """F(t) of a short tracer pulse through the transient kiln (kiln/transient/integrate.py): the
     cumulative outlet tracer over the injected mass, at the output times."""
-    from rotarykiln.kiln.transient.events import parse_transient
     from rotarykiln.kiln.transient.integrate import simulate
+    from rotarykiln.transient_file import parse_transient
 
     until = 2.5 * kiln.residence_time
     wall = {

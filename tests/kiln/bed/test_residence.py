@@ -16,6 +16,7 @@ import rotarykiln.kiln.bed.residence as residence
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.plugflow import integrate_plug_flow
+from rotarykiln.commands.kiln_runs import bed_peclet
 from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.steady.solve import solve_kiln
 
@@ -41,7 +42,9 @@ def effects(charcoal):
 
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(residence, "kiln_segregated_conversion", spy)
-        eff = residence.residence_time_effects(case, kiln, sol)
+        eff = residence.residence_time_effects(
+            kiln, sol, peclet=bed_peclet(case, sol.residence_time)[0]
+        )
     return eff, seen
 
 

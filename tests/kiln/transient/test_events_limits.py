@@ -16,13 +16,9 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.cli import main
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.from_case import kiln_from_case
-from rotarykiln.kiln.transient.events import (
-    MAX_EVENTS,
-    MAX_OUTPUT_TIMES,
-    parse_transient,
-    read_transient_file,
-)
+from rotarykiln.kiln.transient.events import MAX_OUTPUT_TIMES
 from rotarykiln.kiln.transient.integrate import simulate
+from rotarykiln.transient_file import MAX_EVENTS, parse_transient, read_transient_file
 
 
 @pytest.fixture(scope="module")

@@ -9,9 +9,10 @@ import pytest
 from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln.from_case import kiln_from_case
-from rotarykiln.kiln.transient.events import Schedule, kiln_at, parse_transient
+from rotarykiln.kiln.transient.events import Schedule, kiln_at
 from rotarykiln.kiln.transient.holdup import Holdup
 from rotarykiln.kiln.transient.integrate import TransientKiln, _gas_cell_temperature, _Run, simulate
+from rotarykiln.transient_file import parse_transient
 
 BARR_WALL = {
     "layers": [

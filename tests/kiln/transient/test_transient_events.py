@@ -10,7 +10,7 @@ from rotarykiln.cases import builtin_case_path
 from rotarykiln.cli import main
 from rotarykiln.errors import InputError
 from rotarykiln.kiln.from_case import kiln_from_case
-from rotarykiln.kiln.transient.events import parse_transient
+from rotarykiln.transient_file import parse_transient
 
 
 @pytest.fixture(scope="module")

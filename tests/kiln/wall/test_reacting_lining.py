@@ -76,7 +76,10 @@ def test_constant_u_or_a_lining():
     seed, _ = kiln_from_case(parse_case(data))
     assert seed.wall.layers == () and seed.wall.loss_u == 7.0
     lined, _ = kiln_from_case(parse_case(_lined("limestone_calcination")))
-    assert len(lined.wall.layers) == 2 and lined.wall.ambient_temperature == seed.wall.ambient_temperature
+    assert (
+        len(lined.wall.layers) == 2
+        and lined.wall.ambient_temperature == seed.wall.ambient_temperature
+    )
 
 
 @pytest.mark.parametrize(

@@ -11,7 +11,7 @@ time),
 with the dispersion coefficient of Sherritt et al. (2003)
 (:func:`rotarykiln.rtd.correlations.sherritt_dispersion`, no lifters in seed 004's kilns);
 ``chemistry.peclet`` overrides Pe, and a case ``rtd:`` section chooses the model and the
-correlation as for ``rotarykiln run`` (:func:`rotarykiln.rtd.predict.peclet_from_case`).
+correlation as for ``rotarykiln run`` (:func:`rotarykiln.commands.model_runs.peclet_from_case`).
 
 Each residence-time class :math:`\tau'` crosses the kiln at :math:`L/\tau'` through the
 converged kiln's temperature, CO2 and heat-input profiles (frozen: a segregated parcel does not
@@ -134,31 +134,76 @@ def _reactant(sol, kiln) -> str:
     return name
 
 
-def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: int = 24):
-    """Plug vs segregated conversion of the kiln ``sol`` over its predicted RTD.
+def residence_time_effects(
+    kiln,
+    sol,
+    species: str | None = None,
+    n_tau: int = 24,
+    *,
+    peclet: float | None = None,
+    model: str = "open-open",
+):
+    r"""Plug vs segregated conversion of the kiln ``sol`` over its predicted RTD.
 
-    Pe: ``case.chemistry.peclet`` if given, else the case's ``rtd:`` section (model and
-    correlation, :func:`rotarykiln.rtd.predict.peclet_from_case`) if present, else the
-    Sherritt et al. (2003) correlation with the kiln's fill, open-open model.
+    The conversion of each age class of the bed, integrated along the solved temperature and
+    gas profiles, weighted by the axial-dispersion RTD of the bed (mean: the solution's
+    residence time):
+
+    .. math:: \bar X = \int_0^\infty E(t)\,X(t)\,dt
+
+    Parameters
+    ----------
+    kiln : Kiln
+        The kiln solved.
+    sol : KilnSolution
+        Its steady solution.
+    species : str, optional
+        The fed reactant (default: the first one a reaction consumes).
+    n_tau : int
+        Number of age classes (the number of RTD classes).
+    peclet : float, optional
+        The bed's Peclet number, dimensionless (a case's ``chemistry.peclet`` or its
+        ``rtd:`` section, :func:`rotarykiln.commands.kiln_runs.bed_peclet`); None: from the
+        Sherritt et al. (2003) dispersion correlation with the kiln's fill.
+    model : str
+        The RTD's boundary conditions (:mod:`rotarykiln.rtd.dispersion`).
+
+    Returns
+    -------
+    ResidenceTimeEffects
+        Plug and segregated conversions (fraction), the Peclet number and dispersion (m2/s).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from rotarykiln.api import load_case
+    >>> from rotarykiln.kiln.from_case import kiln_from_case
+    >>> from rotarykiln.kiln.steady.solve import solve_kiln
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     kiln, _ = kiln_from_case(load_case("limestone_calcination"))
+    ...     sol = solve_kiln(kiln, 20)
+    ...     eff = residence_time_effects(kiln, sol, n_tau=6, peclet=20.0)
+    >>> eff.peclet, bool(0 <= eff.result.segregated <= 1)
+    (20.0, True)
+
+    References
+    ----------
+    O. Levenspiel, Chemical Reaction Engineering, 3rd ed. (1999), ch. 11 and 13 (segregated
+    flow); R.G. Sherritt et al., Chem. Eng. Sci. 58 (2003) 401 (dispersion in rotary drums).
     """
     species = species or _reactant(sol, kiln)
-    model = "open-open"
-    dispersion = float(
-        sherritt_dispersion(
-            kiln.drum.omega, 2 * kiln.drum.radius, kiln.bed.particle_diameter, kiln.bed.fill
+    tau = sol.residence_time
+    if peclet is None:
+        dispersion = float(
+            sherritt_dispersion(
+                kiln.drum.omega, 2 * kiln.drum.radius, kiln.bed.particle_diameter, kiln.bed.fill
+            )
         )
-    )
-    pe = getattr(getattr(case, "chemistry", None), "peclet", None)
-    if pe is None and getattr(case, "rtd", None) is not None:
-        from rotarykiln.rtd.predict import peclet_from_case
-
-        pe, _ = peclet_from_case(case, kiln.residence_time)
-        model = case.rtd.model
-        dispersion = kiln.drum.length**2 / (pe * kiln.residence_time)
-    if pe is None:
-        pe = kiln.bed.velocity * kiln.drum.length / dispersion
-    dispersion = kiln.drum.length**2 / (pe * kiln.residence_time)
-    rtd = KilnRTD(model, kiln.residence_time, float(pe))
+        peclet = kiln.drum.length**2 / (tau * dispersion)
+    pe = float(peclet)
+    dispersion = kiln.drum.length**2 / (pe * tau)
+    rtd = KilnRTD(model, tau, pe)
     z = sol.z
     fl = sol.fluxes
     gas = sol.gas_flows
@@ -195,7 +240,7 @@ def residence_time_effects(case, kiln, sol, species: str | None = None, n_tau: i
         n_tau=n_tau,
         t_max=t_max,
         n=801,
-        extra_residence_times=[kiln.drum.length / kiln.bed.velocity],
+        extra_residence_times=[tau],
     )
     return ResidenceTimeEffects(
         species,

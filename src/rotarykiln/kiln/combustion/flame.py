@@ -8,7 +8,8 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
   GRI-Mech 3.0 thermochemistry, water as vapour): their property table, mass flow, the
   temperature of the unburnt mixture (the streams mixed at constant enthalpy), the heat of
   combustion at that state and the adiabatic temperature of the fully mixed products;
-- the **heating values** of the fuel input, LHV and HHV (W), for the energy balance sheet;
+- the **heating values** of the fuel input, LHV and HHV (W), for the energy balance sheet
+  (:func:`rotarykiln.materials.gas.fuel_data`);
 - the **jet numbers** of the burner (when the nozzle diameter is given): Thring-Newby
   equivalent nozzle diameter :math:`d_e = 2\dot m_0/\sqrt{\pi\rho_a \dot G_0}`, the
   Thring-Newby parameter :math:`\theta = (1 + \dot m_a/\dot m_0)\,d_e/D` (close to the
@@ -23,7 +24,7 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
 
   with :math:`C_T` the mole fraction of nozzle fluid in its stoichiometric mixture with air
   (1 when the nozzle fluid is already lean), :math:`T_F` its adiabatic flame temperature,
-  :math:`\alpha_T = 1`;
+  :math:`\alpha_T = 1` (:func:`rotarykiln.heat.flames.hawthorne_flame_length`);
 - the **dissociation** of the products (``products: equilibrium``, the default): their
   dissociation heat at equilibrium (:mod:`rotarykiln.materials.dissociation`), carried by the
   kiln gas, and the equilibrium adiabatic temperature; ``complete`` keeps the frozen products;
@@ -43,9 +44,9 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
     .. math:: X_b(\xi) = \xi^{1+m} + \xi\frac{1+m}{m}(1 - \xi^m),\qquad
               q'(x) = Q\,\frac{dX_b}{dx} = \frac{Q}{L_f}\frac{1+m}{m}(1 - \xi^m)
 
-    the heat released into the mixed gas, which enters at the temperature of the unburnt
-    mixture. It needs the flame length (``flame_length``, or the nozzle diameter for the
-    Hawthorne-Weddell-Hottel length).
+    (:func:`rotarykiln.heat.flames.burnout_fraction`), the heat released into the mixed gas,
+    which enters at the temperature of the unburnt mixture. It needs the flame length
+    (``flame_length``, or the nozzle diameter for the Hawthorne-Weddell-Hottel length).
 
 References
 ----------
@@ -64,12 +65,16 @@ from functools import lru_cache
 import numpy as np
 
 from rotarykiln.errors import InputError, check_positive
+from rotarykiln.heat.flames import burnout_fraction, hawthorne_flame_length
 from rotarykiln.materials.dissociation import (
     DISSOCIATION_SPECIES,
     dissociation_heat,
     equilibrium_adiabatic_temperature,
 )
 from rotarykiln.materials.gas import (
+    AIR,
+    AIR_MOLAR_MASS,
+    AIR_O2,
     MECHANISM,
     R_UNIVERSAL,
     T_REF,
@@ -79,27 +84,20 @@ from rotarykiln.materials.gas import (
 )
 
 __all__ = [
-    "AIR",
     "AirStream",
     "Burner",
     "Flame",
     "fire",
-    "burnout_fraction",
-    "heating_values",
-    "hawthorne_flame_length",
     "COMBUSTION_MODELS",
 ]
 
-#: Dry air by mole, as burnt by :func:`rotarykiln.materials.gas.burn_fuel`.
-AIR = "O2:0.21, N2:0.79"
-AIR_MOLAR_MASS = 0.21 * 0.031998 + 0.79 * 0.0280134  # kg/mol
+#: How the fuel burns along the kiln (docs/flames.md).
 COMBUSTION_MODELS = ("instant", "burnout", "stirred")
 #: Peclet number u x_w / D of a stirred recirculation zone: well mixed (D = 10 u x_w).
 STIRRED_PECLET = 0.1
 PRODUCT_MODELS = ("equilibrium", "complete")
 ENTRAINMENT = 0.32  # Ricou & Spalding (1961), far field
 JET_SPREAD = 0.2  # half-width growth rate of a round jet, flames.md section 2
-BURNOUT_EXPONENT = 1.4  # width ratio squared of the mixture-fraction and velocity profiles
 H2O_VAPORISATION = 44.004e3  # J/mol at 298.15 K
 
 
@@ -310,81 +308,6 @@ class BurnoutProfile:
         return np.abs(np.diff(xb)) + 0.0
 
 
-def burnout_fraction(xi, m: float = BURNOUT_EXPONENT):
-    r"""Burnt fraction of the fuel along a turbulent jet flame, self-similar profiles.
-
-    .. math:: X_b(\xi) = \xi^{1+m} + \xi\frac{1+m}{m}(1 - \xi^m),\quad 0 \le \xi \le 1;
-              \qquad X_b = 1 \text{ for } \xi > 1
-
-    Parameters
-    ----------
-    xi : float or array, -
-        Distance from the burner over the flame length (clipped to [0, 1]).
-    m : float, -
-        Ratio of the mixture-fraction to the velocity profile widths, squared (1.4).
-
-    Returns
-    -------
-    float or array, -
-        Burnt fraction.
-
-    Examples
-    --------
-    >>> [round(float(burnout_fraction(v)), 2) for v in (0.25, 0.5, 1.0)]
-    [0.4, 0.72, 1.0]
-
-    References
-    ----------
-    flames.md section 2 (recommended burn-out profile: Gaussian self-similar velocity and
-    mixture-fraction profiles, fast chemistry at the stoichiometric mixture fraction).
-    """
-    xi = np.clip(np.asarray(xi, dtype=float), 0.0, 1.0)
-    return xi ** (1.0 + m) + xi * (1.0 + m) / m * (1.0 - xi**m)
-
-
-def hawthorne_flame_length(
-    nozzle_diameter, c_t, t_flame, t_nozzle, m_surroundings, m_nozzle, alpha_t=1.0
-):
-    r"""Length of a turbulent jet diffusion flame (Hawthorne, Weddell & Hottel 1949).
-
-    .. math:: \frac{L_f}{d} = \frac{5.3}{C_T}\sqrt{\frac{T_F}{\alpha_T T_N}
-              \left[C_T + (1 - C_T)\frac{M_s}{M_N}\right]}
-
-    Parameters
-    ----------
-    nozzle_diameter : float, m
-    c_t : float, -
-        Mole fraction of nozzle fluid in its stoichiometric mixture with the surroundings.
-    t_flame, t_nozzle : float, K
-        Adiabatic flame temperature of that mixture; temperature of the nozzle fluid.
-    m_surroundings, m_nozzle : float, kg/mol
-        Molar masses of the surrounding fluid and of the nozzle fluid.
-    alpha_t : float, -
-        Moles of reactants per mole of products (about 1 for methane and air).
-
-    Returns
-    -------
-    float, m
-
-    Examples
-    --------
-    Pure methane into air (C_T = 0.095, T_F = 2225 K): about 200 nozzle diameters.
-
-    >>> round(hawthorne_flame_length(1.0, 0.095, 2225.0, 298.15, 0.02885, 0.016043))
-    200
-
-    References
-    ----------
-    W.R. Hawthorne, D.S. Weddell, H.C. Hottel, 3rd Symp. Combust. (1949) 266-288; flames.md
-    section 2.
-    """
-    check_positive("nozzle_diameter", nozzle_diameter, "m")
-    if not 0 < c_t <= 1:
-        raise InputError("c_t", c_t, "in (0, 1]")
-    ratio = (t_flame / (alpha_t * t_nozzle)) * (c_t + (1.0 - c_t) * m_surroundings / m_nozzle)
-    return float(nozzle_diameter * 5.3 / c_t * np.sqrt(ratio))
-
-
 @lru_cache(maxsize=64)
 def _fuel_data(fuel: tuple[tuple[str, float], ...]):
     """Molar mass (kg/mol), O2 demand (mol/mol), LHV and HHV (J/kg) of a fuel at 298.15 K
@@ -392,36 +315,6 @@ def _fuel_data(fuel: tuple[tuple[str, float], ...]):
     from rotarykiln.materials.gas import fuel_data
 
     return fuel_data(fuel)
-
-
-def heating_values(fuel) -> tuple[float, float]:
-    """Lower and higher heating values of a gaseous fuel at 298.15 K, J/kg.
-
-    Complete combustion to CO2 and H2O (vapour for the LHV, liquid for the HHV, with the
-    enthalpy of vaporisation of water at 298.15 K, 44.0 kJ/mol); Cantera GRI-Mech 3.0
-    thermochemistry.
-
-    Parameters
-    ----------
-    fuel : str or mapping
-        Composition by mole, e.g. ``"CH4:1"``.
-
-    Returns
-    -------
-    (float, float), J/kg
-
-    Examples
-    --------
-    >>> lhv, hhv = heating_values("CH4:1")
-    >>> round(lhv / 1e6, 2), round(hhv / 1e6, 2)
-    (50.03, 55.51)
-
-    References
-    ----------
-    Cantera GRI-Mech 3.0 thermo; flames.md section 1 (CH4 LHV 50.03 MJ/kg).
-    """
-    _, _, lhv, hhv = _fuel_data(parse_composition(fuel))
-    return lhv, hhv
 
 
 def _mix_air_temperature(streams) -> float:
@@ -446,6 +339,7 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     Parameters
     ----------
     burner : Burner
+        Fuel, air streams and nozzle (SI units).
     kiln_diameter : float, m
         Inner diameter of the kiln.
     kiln_length : float, m, optional
@@ -454,6 +348,7 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     Returns
     -------
     Flame
+        Products, heating values (W), jet numbers and flame length (m) of the burner.
 
     Examples
     --------
@@ -466,7 +361,7 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     >>> round(f.fuel_lhv / 1e3, 1), round(f.products.adiabatic_temperature, -1)
     (70.5, 1090.0)
     >>> round(f.flame_length, 2), f.recirculating
-    (0.63, True)
+    (0.64, True)
 
     References
     ----------
@@ -479,7 +374,7 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     t_air = _mix_air_temperature(burner.flame_air)
     products = burn_fuel(fuel, burner.fuel_flow, air, burner.fuel_temperature, t_air)
     n_fuel = burner.fuel_flow / mm_fuel
-    n_stoich_air = n_fuel * o2_demand / 0.21
+    n_stoich_air = n_fuel * o2_demand / AIR_O2
     if n_stoich_air > 0:
         lam = air / AIR_MOLAR_MASS / n_stoich_air
         lam_p = burner.primary_air.flow / AIR_MOLAR_MASS / n_stoich_air
@@ -564,7 +459,7 @@ def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
         c_t = 1.0
         t_f = _adiabatic(fuel, burner.fuel_flow, burner.primary_air.flow, burner, t0)
     else:
-        n_add = (1.0 - lam_p) * (burner.fuel_flow / mm_fuel) * _fuel_data(fuel)[1] / 0.21
+        n_add = (1.0 - lam_p) * (burner.fuel_flow / mm_fuel) * _fuel_data(fuel)[1] / AIR_O2
         c_t = n0 / (n0 + n_add)
         m_add = n_add * AIR_MOLAR_MASS
         t_f = _adiabatic(fuel, burner.fuel_flow, burner.primary_air.flow + m_add, burner, t0)

@@ -97,6 +97,12 @@ class Bed:
         check_nonnegative("bed.axial_dispersion", self.dispersion, "m2/s")
         for name, cp in self.cp.items():
             check_positive(f"material.specific_heat ({name})", cp, "J/(kg K)")
+        if self.depth is not None and self.depth.density != self.bulk_density:
+            raise InputError(
+                "material.bulk_density",
+                self.bulk_density,
+                f"the bed-depth law's density ({self.depth.density:.6g} kg/m3): one bulk density",
+            )
 
 
 @dataclass(frozen=True)

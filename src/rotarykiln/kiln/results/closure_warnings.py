@@ -270,22 +270,7 @@ def _groups(caught) -> tuple[list, list]:
     return list(groups.values()), list(others.values())
 
 
-def _default_origin(case, field: str) -> str | None:
-    """Where a value the case does not give comes from (None: the case gives it)."""
-    if case is None or field != "material.particle_size":
-        return None
-    m = case.material
-    if m.particle_size is not None:
-        return None
-    from rotarykiln.kiln.from_case import _library_name
-
-    name = _library_name(m.solid or m.name)
-    if name is None:
-        return f"the model's default particle size: give {field}"
-    return f"the library default for {name}: give {field}"
-
-
-def _describe(quantity: str, lo: float, hi: float, low: float, high: float, case) -> str:
+def _describe(quantity: str, lo: float, hi: float, low: float, high: float, origins) -> str:
     d = QUANTITIES.get(quantity, {"words": quantity, "unit": "", "scale": 1.0})
     s, unit = d["scale"], d["unit"]
     u = f" {unit}" if unit else ""
@@ -294,10 +279,10 @@ def _describe(quantity: str, lo: float, hi: float, low: float, high: float, case
         c = (lo - 273.15, hi - 273.15)
         shown = f"{_number(c[0])}" if lo == hi else f"{_number(c[0])} to {_number(c[1])}"
         u = f" K ({shown} degC)"
-    origin = _default_origin(case, d.get("field"))
+    origin = None if origins is None else origins.get(d.get("field"))
     if origin is not None:
         given = f" ({origin})"
-    elif d.get("field") and case is not None:
+    elif d.get("field") and origins is not None:
         given = f" ({d['field']})"
     else:
         given = ""
@@ -318,7 +303,7 @@ def _cells_outside(solution, group: _Group):
     return out
 
 
-def closure_warnings(caught, solution=None, case=None) -> list:
+def closure_warnings(caught, solution=None, origins=None) -> list:
     """The warnings a kiln run shows for the warnings ``caught`` during its solve.
 
     Parameters
@@ -327,8 +312,10 @@ def closure_warnings(caught, solution=None, case=None) -> list:
         As recorded by ``warnings.catch_warnings(record=True)``.
     solution : KilnSolution, optional
         The converged solution (for the heat flows and their shares).
-    case : Case, optional
-        The case run (to tell a value it gives from a library default).
+    origins : dict, optional
+        Case-file field -> where a value the case does not give comes from
+        (:func:`rotarykiln.kiln.from_case.default_origins`); with it, a value the case gives
+        is named by its field.
 
     Returns
     -------
@@ -358,7 +345,7 @@ def closure_warnings(caught, solution=None, case=None) -> list:
         entry = CLOSURES[g.closure]
         field, value = g.closure.split(".", 1)
         alternatives = tuple(a for a in _accepted(field) if a != value)
-        what = "; ".join(_describe(q, *v, case) for q, v in g.quantities.items())
+        what = "; ".join(_describe(q, *v, origins) for q, v in g.quantities.items())
         feeds = " and ".join(PATHS[p][0] for p in entry["feeds"])
         text = (
             f"closures.{field}: {value} ({entry['name']}) is used outside its range: {what} "
@@ -408,13 +395,13 @@ def closure_warnings(caught, solution=None, case=None) -> list:
     return out + others
 
 
-def emit(caught, solution=None, case=None) -> list:
+def emit(caught, solution=None, origins=None) -> list:
     """Warn with :func:`closure_warnings` of ``caught``; returns what was warned.
 
     A :class:`ClosureWarning` is issued as a warning; another warning is issued again as it was
     (its category, file and line), once per text.
     """
-    shown = closure_warnings(caught, solution, case)
+    shown = closure_warnings(caught, solution, origins)
     for w in shown:
         if isinstance(w, ClosureWarning):
             warnings.warn(w, stacklevel=3)

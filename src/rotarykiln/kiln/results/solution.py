@@ -206,6 +206,7 @@ class KilnSolution:
 
     @property
     def bed_outlet_temperature(self) -> float:
+        """Bed temperature at the solids discharge (z = L), K."""
         return float(self.t_bed_nodes[-1])
 
     def summary(self) -> dict:

@@ -29,14 +29,17 @@ def tracer_moments(t, c, pulse=0.0):
     ----------
     t : array, s
         Times since the start of the pulse.
-    c : array
-        Outlet tracer flow (any unit).
+    c : array, kg/s
+        Outlet tracer flow (any unit: the moments do not depend on it).
     pulse : float, s
         Width of the square input pulse.
 
     Returns
     -------
-    (mean s, variance s2, recovered integral of c dt)
+    mean : float, s
+    variance : float, s2
+    recovered : float, kg
+        The integral of c dt (in the unit of c times s).
 
     Examples
     --------
@@ -201,6 +204,8 @@ class TransientSolution:
 
     # --- summary, plots, files ------------------------------------------------------------
     def summary(self) -> dict:
+        """Scalars: outlet temperatures at the start and the end, residence times, wall heat
+        capacity, the largest energy (and element) closure, solver figures."""
         o0, o1 = self.outlet[0], self.outlet[-1]
         out = {
             "name": self.name,

@@ -133,6 +133,7 @@ def newton_banded(
     tol : float
         Convergence when ``max|F|/scale <= tol``.
     max_iter : int
+        Largest number of Newton iterations.
     max_step : float
         Largest change of a temperature unknown per iteration, K.
     lower : float
@@ -159,6 +160,26 @@ def newton_banded(
     ------
     ConvergenceError
         With the iterations, the residual and the cell/equation where it is largest.
+
+    Examples
+    --------
+    Six nodes of a conducting chain between 300 K and 1000 K (one unknown per cell, each
+    residual coupling a cell to its neighbours):
+
+    >>> def F(x):
+    ...     ends = np.ones(x.shape[:-2] + (1, 1))
+    ...     t = np.concatenate([300.0 * ends, x, 1000.0 * ends], axis=-2)
+    ...     return t[..., :-2, :] - 2.0 * t[..., 1:-1, :] + t[..., 2:, :]
+    >>> x, report = newton_banded(F, np.full((6, 1), 600.0), 1.0)
+    >>> x[:, 0].round(6).tolist(), report.iterations
+    ([400.0, 500.0, 600.0, 700.0, 800.0, 900.0], 1)
+
+    References
+    ----------
+    A.R. Curtis, M.J.D. Powell, J.K. Reid, J. Inst. Math. Appl. 13 (1974) 117-119 (coloured
+    finite-difference Jacobians); J.E. Dennis, R.B. Schnabel, Numerical Methods for
+    Unconstrained Optimization and Nonlinear Equations, Prentice-Hall (1983), ch. 6
+    (backtracking line search).
     """
     x = np.array(x0, dtype=float)
     n, nv = x.shape

@@ -7,7 +7,7 @@ import numpy as np
 from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
 from rotarykiln.chemistry.ratelaws import MOISTURE
 from rotarykiln.errors import ConvergenceError, InputError
-from rotarykiln.kiln.accounting import energy_sheet, exhaust_state
+from rotarykiln.kiln.accounting import energy_sheet, exhaust_state, global_balance
 from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import Scales
 from rotarykiln.kiln.residual import KilnResidual
@@ -71,6 +71,7 @@ def solve_kiln(
     Parameters
     ----------
     kiln : Kiln
+        The kiln's inputs (:class:`~rotarykiln.kiln.inputs.kiln.Kiln`).
     n_cells : int
         Number of equal cells (>= 4).
     tol : float
@@ -93,6 +94,23 @@ def solve_kiln(
         Newton fails after continuation in the reaction rates (and radiation); the message
         names the cell (z) and equation with the largest residual. Also when a balance does
         not close or a result is not finite.
+
+    Examples
+    --------
+    >>> from rotarykiln.kiln.inputs import Kiln
+    >>> from rotarykiln.materials.solids import load_solid
+    >>> k = Kiln.inert(solid=load_solid("sand"), solids_flow=0.004,
+    ...     solids_inlet_temperature=298.15, gas_composition="O2:0.21, N2:0.79",
+    ...     gas_flow=0.007, gas_inlet_temperature=535.0, length=2.44, radius=0.094,
+    ...     omega=0.157, fill=0.17)
+    >>> sol = solve_kiln(k, 20)
+    >>> 298.15 < sol.bed_outlet_temperature < 535.0, abs(sol.energy_closure) < 1e-6
+    (True, True)
+
+    References
+    ----------
+    The finite-volume balances: docs/heat.md and docs/reacting.md; the closures: Tscheng &
+    Watkinson, Can. J. Chem. Eng. 57 (1979) 433; Li et al., Powder Technol. 152 (2005) 113.
     """
     if int(n_cells) != n_cells or n_cells < 4:
         raise InputError("solver.cells", n_cells, "an integer >= 4")
@@ -151,23 +169,13 @@ def solve_kiln(
     for solid in {id(s): s for s in kiln.bed.solids.values()}.values():
         solid.check_range(tb_n)  # a library solid's c_p fit extrapolated: OutOfRangeWarning
     # global balances
-    dz = res.dz
-    hb = res.bed_enthalpy(tb_n)
-    hg = res.mixture.species_enthalpy(tg_n)
-    release = float(np.sum(res.grid.heat_release) * dz)
-    heating = float(np.sum(fl.get("q_electric_heating", 0.0)) * dz)
-    gi, go = (-1, 0) if kiln.gas.counter_current else (0, -1)  # gas inlet and outlet faces
-    e_in = float(qb[0] @ hb[0] + qg[gi] @ hg[gi])
-    e_out = float(qb[-1] @ hb[-1] + qg[go] @ hg[go])
-    loss = float(np.sum(fl["q_shell_loss"]) * dz)
-    w_all = prod
-    h_all = np.zeros_like(prod)
-    h_all[:, res.bed_idx] = res.bed_enthalpy(fl["t_bed_mean"])
-    h_all[:, res.gas_idx] = res.mixture.species_enthalpy(fl["t_bed_mean"])
-    reaction_heat = float(np.sum(fl["q_reaction_absorbed"] - (w_all * h_all).sum(-1)) * dz)
-    heat_to_solids = float(qb[-1] @ hb[-1] - qb[0] @ hb[0])
+    bal = {key: float(v) for key, v in global_balance(res, fl, prod, tb_n, tg_n, qb, qg).items()}
+    e_in, e_out, loss = bal["energy_in"], bal["energy_out"], bal["shell_loss"]
+    release, heating, reaction_heat = bal["release"], bal["heating"], bal["reaction_heat"]
+    heat_to_solids = bal["solids_out"] - bal["solids_in"]
     denom = max(abs(heat_to_solids), abs(reaction_heat), 1.0)
-    closure = (e_in + release + heating - e_out - loss - reaction_heat) / denom
+    closure = bal["net"] / denom
+    gi, go = (-1, 0) if kiln.gas.counter_current else (0, -1)  # gas inlet and outlet faces
     inlets = {s: float(qb[0, i]) for i, s in enumerate(res.bed_names)}
     inlets.update({s: float(qg[gi, i]) for i, s in enumerate(res.gas_names)})
     outlets = {s: float(max(qb[-1, i], 0.0)) for i, s in enumerate(res.bed_names)}
@@ -190,11 +198,11 @@ def solve_kiln(
     exhaust, ingress_in = exhaust_state(res, qg[go], float(tg_n[go]))
     sheet = energy_sheet(
         kiln,
-        solids_in=float(qb[0] @ hb[0]),
+        solids_in=bal["solids_in"],
         to_solids=heat_to_solids,
         reaction_heat=reaction_heat,
-        gas_in=float(qg[gi] @ hg[gi]),
-        exhaust=float(qg[go] @ hg[go]) + ingress_in,
+        gas_in=bal["gas_in"],
+        exhaust=bal["gas_out"] + ingress_in,
         shell_loss=loss,
         release=release,
         heating=heating,
@@ -390,12 +398,15 @@ def _check_no_oscillation(res: KilnResidual, profiles: dict, iterations) -> None
 
 def _residence_time(res: KilnResidual, geo, qb) -> float:
     r"""Mean solids residence time, s: the kiln's L/v, or with the bed depth solved the integral
-    of hold-up over local mass flow, :math:`\int \rho_b A_{bed}/\dot m\,dz`."""
+    of hold-up over local mass flow, :math:`\int \rho A_{bed}/\dot m\,dz`, with the bed
+    density :math:`\rho` of the depth's volume law (:meth:`KilnResidual.bed_density`: the bulk
+    density, or with the fresh feed's volume :math:`\int A_{bed}/\dot V_0\,dz`)."""
     k = res.kiln
     if res.depth is None:
         return k.residence_time
     m = np.maximum(0.5 * (qb[1:].sum(-1) + qb[:-1].sum(-1)), 1e-300)
-    return float(np.sum(k.bed.bulk_density * geo.bed_area / m) * res.dz)
+    rho = res.bed_density(0.5 * (qb[1:] + qb[:-1]))
+    return float(np.sum(rho * geo.bed_area / m) * res.dz)
 
 
 def _continuation(res: KilnResidual):

@@ -87,8 +87,22 @@ class WallProperties:
 def refine_lining(layers, max_spacing: float = DEFAULT_NODE_SPACING):
     """Cut each lining layer into equal sub-layers no thicker than ``max_spacing`` (m).
 
-    Returns the new layers and, for each, the index of the layer it came from. The steady
-    conduction is unchanged: a layer's Kirchhoff heat flow is exact for any subdivision.
+    The steady conduction is unchanged: a layer's Kirchhoff heat flow is exact for any
+    subdivision.
+
+    Parameters
+    ----------
+    layers : tuple of Layer
+        Lining, inner to outer.
+    max_spacing : float, m
+        Thickest sub-layer.
+
+    Returns
+    -------
+    layers : tuple of Layer
+        The sub-layers, inner to outer.
+    parent : tuple of int
+        For each sub-layer, the index of the layer it came from.
 
     Examples
     --------
@@ -97,6 +111,11 @@ def refine_lining(layers, max_spacing: float = DEFAULT_NODE_SPACING):
     >>> new, parent = refine_lining((brick,), 0.025)
     >>> len(new), round(new[0].thickness, 4), parent
     (4, 0.0225, (0, 0, 0, 0))
+
+    References
+    ----------
+    H.S. Carslaw, J.C. Jaeger, Conduction of Heat in Solids, 2nd ed., Oxford (1959) (the
+    Kirchhoff transformation of conduction with k(T)).
     """
     check_positive("wall.max_node_spacing", max_spacing, "m")
     out, parent = [], []
@@ -129,6 +148,11 @@ def lining_node_capacity(radii, rho_cp):
     >>> c = lining_node_capacity(np.array([[1.0], [2.0]]), np.array([2.0 / np.pi]))
     >>> c.tolist()  # 2 J/(m3 K) * pi (4 - 1) m2 / pi, split over the two nodes
     [[3.0, 3.0]]
+
+    References
+    ----------
+    S.V. Patankar, Numerical Heat Transfer and Fluid Flow, Hemisphere (1980), ch. 4 (control
+    volumes about the nodes, half a layer on each side).
     """
     r = np.asarray(radii, dtype=float)
     layer = np.asarray(rho_cp, dtype=float)[:, None] * np.pi * (r[1:] ** 2 - r[:-1] ** 2)

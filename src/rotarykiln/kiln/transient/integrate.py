@@ -54,6 +54,7 @@ from scipy.integrate import BDF
 from scipy.sparse import csc_matrix, lil_matrix
 
 from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln.accounting import global_balance
 from rotarykiln.kiln.bed.dispersion import dispersion_sources
 from rotarykiln.kiln.inputs.boundary import BoundaryInputs
 from rotarykiln.kiln.residual import T_FLOOR, KilnResidual
@@ -267,7 +268,7 @@ class TransientKiln:
             d_tr = d_tr + sp[..., 1]
         blk[..., self.nv] = d_tr
         # quadrature: energy and species across the ends, losses, sources
-        flux = self.boundary(u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes)
+        flux = self.boundary(u, fl, prod, tb_n, tg_n, qb, qg)
         dY[:, self.n * self.m :] = flux["acc"]
         dy = dY[0] if single else dY.T
         if fluxes:
@@ -276,43 +277,27 @@ class TransientKiln:
             }
         return dy
 
-    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes):
-        """Flows across the kiln's boundary (W and kg/s), arrays over the batch."""
+    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg):
+        """Flows across the kiln's boundary (W and kg/s), arrays over the batch: the energy
+        terms of :func:`~rotarykiln.kiln.accounting.global_balance`, the species across the
+        ends, and the outlets."""
         res = self.res
         s = u.speed_factor
-        dz = res.dz
         gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
-        hg = res.mixture.species_enthalpy(np.maximum(tg_n, T_FLOOR))
-        e_in = hb_nodes[:, 0] @ u.feed + (qg[:, gi] * hg[:, gi]).sum(-1)
-        e_out = s * (qb[:, -1] * hb_nodes[:, -1]).sum(-1) + (qg[:, go] * hg[:, go]).sum(-1)
-        kb = qb.shape[0]
-
-        def total(key):
-            v = fl.get(key, 0.0)
-            return np.broadcast_to(v, (kb, self.n)).sum(-1) * dz
-
-        loss, release, heating = (
-            total("q_shell_loss"),
-            total("q_source_gas"),
-            total("q_electric_heating"),
+        bal = global_balance(
+            res, fl, prod, np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR), qb, qg, u
         )
-        tbm = fl["t_bed_mean"]
-        h_all = np.zeros_like(prod)
-        h_all[..., res.bed_idx] = res.bed_enthalpy(tbm)
-        h_all[..., res.gas_idx] = res.mixture.species_enthalpy(tbm)
-        absorbed = np.broadcast_to(fl["q_reaction_absorbed"], (kb, self.n))
-        reaction = (absorbed - (prod * h_all).sum(-1)).sum(-1) * dz
-        net_e = e_in + release + heating - e_out - loss - reaction
+        kb = qb.shape[0]
         net_b = u.feed - s * qb[:, -1]
         net_g = qg[:, gi] - qg[:, go]
         out = {
-            "acc": np.concatenate([net_e[:, None], net_b, net_g], -1),
-            "energy_in_W": e_in,
-            "energy_out_W": e_out,
-            "shell_loss_W": loss,
-            "heat_release_W": release,
-            "electric_heating_W": heating,
-            "reaction_heat_W": reaction,
+            "acc": np.concatenate([bal["net"][:, None], net_b, net_g], -1),
+            "energy_in_W": bal["energy_in"],
+            "energy_out_W": bal["energy_out"],
+            "shell_loss_W": bal["shell_loss"],
+            "heat_release_W": bal["release"],
+            "electric_heating_W": bal["heating"],
+            "reaction_heat_W": bal["reaction_heat"],
             "bed_outlet_temperature_K": tb_n[:, -1],
             "gas_outlet_temperature_K": tg_n[:, go],
             "solids_outlet_flow_kg_s": s * qb[:, -1].sum(-1),
@@ -389,8 +374,9 @@ def simulate(
         The kiln of the case (:func:`~rotarykiln.kiln.from_case.kiln_from_case`).
     n_cells : int
         Cells along the kiln (the steady model's grid).
-    transient : :class:`~rotarykiln.kiln.transient.events.Transient`
-        Start (steady or cold), events, tracer pulse, wall heat capacities, output interval.
+    transient : Transient
+        Start (steady or cold), events, tracer pulse, wall heat capacities, output interval
+        (:class:`~rotarykiln.kiln.transient.events.Transient`).
     until : float, s
         End of the run.
     rtol : float
@@ -416,6 +402,28 @@ def simulate(
     ------
     ConvergenceError
         The integrator fails (step size collapse); the message gives the time reached.
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from rotarykiln.api import load_case
+    >>> from rotarykiln.kiln.from_case import kiln_from_case
+    >>> from rotarykiln.transient_file import parse_transient
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     kiln, _ = kiln_from_case(load_case("tscheng_A16"))
+    ...     tr = parse_transient({"output_every": "10 min", "events": [
+    ...         {"at": "0 s", "variable": "gas_inlet_temperature", "to": "600 K"}]},
+    ...         kiln, 3600.0)
+    ...     sol = simulate(kiln, 10, tr, 3600.0)
+    >>> s = sol.summary()
+    >>> bool(s["gas_outlet_temperature_end_K"] > s["gas_outlet_temperature_start_K"] + 10)
+    True
+
+    References
+    ----------
+    W.E. Schiesser, The Numerical Method of Lines, Academic Press (1991); L.F. Shampine,
+    M.W. Reichelt, SIAM J. Sci. Comput. 18 (1997) 1-22 (scipy's BDF).
     """
     if not until > 0:
         raise InputError("--until", until, "> 0 s")

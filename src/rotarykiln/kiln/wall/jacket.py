@@ -16,11 +16,11 @@ the bed (negative when the wall heats them):
 with :math:`\bar T_j` the cell mean of the jacket gas, :math:`P_w = 2\pi R` the drum perimeter,
 :math:`U_{c} P_c` the loss of the jacket casing to ambient, and :math:`U_{jw}` the jacket gas to
 wall coefficient: given, or from the annulus closure: forced convection in the annular gap
-(:func:`annulus_heat_transfer_coefficient`, Gnielinski 2009 with the laminar limit of Shah &
-London), the radiation of the gas and of the re-radiating casing
-(:func:`jacket_radiation_conductance`), and the drum wall's conduction. ``htc="wall_at_gas"`` is the rotaryPyrolysis
-assumption: no resistance at all, the wall at the jacket gas temperature
-(:math:`T_w = \bar T_j`), which overstates the heat input.
+(:func:`~rotarykiln.heat.jacket.annulus_heat_transfer_coefficient`, Gnielinski 2009 with the
+laminar limit of Shah & London), the radiation of the gas and of the re-radiating casing
+(:func:`~rotarykiln.heat.jacket.jacket_radiation_conductance`), and the drum wall's
+conduction. ``htc="wall_at_gas"`` is the rotaryPyrolysis assumption: no resistance at all, the
+wall at the jacket gas temperature (:math:`T_w = \bar T_j`), which overstates the heat input.
 
 The jacket is a wall model (:mod:`rotarykiln.kiln.wall.lining`): two temperatures per cell, the inner
 wall and the jacket gas at the cell's jacket outlet face, closed by the two rows above; the
@@ -44,167 +44,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotarykiln.errors import InputError, check_nonnegative, check_positive, warn_out_of_range
+from rotarykiln.errors import InputError, check_nonnegative, check_positive
+from rotarykiln.heat.jacket import annulus_heat_transfer_coefficient, jacket_radiation_conductance
 
-__all__ = [
-    "Jacket",
-    "JacketWall",
-    "annulus_heat_transfer_coefficient",
-    "jacket_radiation_conductance",
-    "jacket_balance",
-]
+__all__ = ["Jacket", "JacketWall", "jacket_balance"]
 
 T_REF = 298.15
-
-
-def annulus_heat_transfer_coefficient(
-    mass_flow, inner_diameter, gap, temperature, *, gas=None, check=True
-):
-    r"""Gas to inner wall heat transfer coefficient of a concentric annulus, W/(m2 K).
-
-    Hydraulic diameter :math:`d_h = 2s` (gap s), :math:`a = d_i/d_o`,
-    :math:`Re = \dot m d_h/(A\mu)`. Turbulent (Gnielinski 2009, inner wall heated, outer
-    insulated):
-
-    .. math:: Nu_t = \frac{(f/8)(Re - 1000)Pr}{k_1 + 12.7\sqrt{f/8}(Pr^{2/3} - 1)}
-              \,0.75\,a^{-0.17},\quad f = (1.8\log_{10}Re_* - 1.5)^{-2},\quad
-              k_1 = 1.07 + 900/Re - 0.63/(1 + 10 Pr)
-
-    with :math:`Re_* = Re\,[(1 + a^2)\ln a + 1 - a^2]/[(1 - a)^2 \ln a]`. Laminar, fully
-    developed (Shah & London; VDI G2): :math:`Nu_l = 3.66 + 1.2\,a^{-0.8}`. Between
-    :math:`Re` 2300 and 10^4 linear in Re between :math:`Nu_l` and :math:`Nu_t(10^4)` (VDI G2
-    / Gnielinski 1995 transition). :math:`h = Nu\,k/d_h`.
-
-    Parameters
-    ----------
-    mass_flow : float, kg/s
-        Jacket gas flow.
-    inner_diameter : float, m
-        Outer diameter of the drum (the annulus' inner wall).
-    gap : float, m
-        Radial width of the annulus (> 0).
-    temperature : float or array, K
-        Gas temperature (properties).
-    gas : GasPropertyTable, optional
-        Gas properties (default: flue gas of natural gas with 20 % excess air, approximated by
-        air; the difference in k and mu is a few %).
-    check : bool
-
-    Returns
-    -------
-    float or array, W/(m2 K)
-
-    Notes
-    -----
-    Valid for :math:`0.1 \le Pr \le 1000` and :math:`a` 0.05-1 (Gnielinski 2009); developed
-    flow (the entrance effect is neglected: conservative); radiation from a radiating flue gas
-    or from a hot casing to the drum is not included.
-
-    Examples
-    --------
-    The rotaryPyrolysis flue gas (175 kg/h) around a 0.41 m drum with a 50 mm gap, at 700 K:
-
-    >>> round(float(annulus_heat_transfer_coefficient(175 / 3600, 0.41, 0.05, 700.0)), 2)
-    2.63
-
-    References
-    ----------
-    V. Gnielinski, Int. J. Heat Mass Transfer 52 (2009) 4447-4456; VDI Heat Atlas, 2nd ed.
-    (2010) G2; R.K. Shah, A.L. London (1978).
-    """
-    from rotarykiln.materials.gas import air_table
-
-    if check:
-        check_positive("jacket.mass_flow", mass_flow, "kg/s")
-        check_positive("jacket.inner_diameter", inner_diameter, "m")
-        check_positive("jacket.gap", gap, "m")
-    gas = gas or air_table()
-    T = np.asarray(temperature, dtype=float)
-    k, mu, cp = gas.conductivity(T), gas.viscosity(T), gas.cp(T)
-    d_i, d_o = inner_diameter, inner_diameter + 2.0 * gap
-    a = d_i / d_o
-    dh = 2.0 * gap
-    area = np.pi / 4.0 * (d_o**2 - d_i**2)
-    re = mass_flow * dh / (area * mu)
-    pr = cp * mu / k
-    nu_l = 3.66 + 1.2 * a**-0.8
-
-    def nu_turb(r):
-        la = np.log(a)
-        re_star = r * ((1 + a * a) * la + 1 - a * a) / ((1 - a) ** 2 * la)
-        f = (1.8 * np.log10(re_star) - 1.5) ** -2
-        k1 = 1.07 + 900.0 / r - 0.63 / (1.0 + 10.0 * pr)
-        return (
-            (f / 8)
-            * (r - 1000)
-            * pr
-            / (k1 + 12.7 * np.sqrt(f / 8) * (pr ** (2 / 3) - 1))
-            * (0.75 * a**-0.17)
-        )
-
-    nu_t = nu_turb(np.maximum(re, 1e4))
-    g = np.clip((re - 2300.0) / (1e4 - 2300.0), 0.0, 1.0)
-    nu = np.where(re >= 1e4, nu_t, nu_l + g * (nu_turb(1e4) - nu_l))
-    nu = np.maximum(nu, nu_l)
-    if check:
-        warn_out_of_range("jacket Prandtl number", pr, 0.1, 1000.0, "Gnielinski (2009)")
-    h = nu * k / dh
-    return h if np.ndim(h) else float(h)
-
-
-SIGMA = 5.670374419e-8  # W/(m2 K4)
-
-
-def jacket_radiation_conductance(
-    t_gas, t_drum, drum_diameter, gap, *, eps_drum=0.8, eps_casing=0.8, eps_gas=0.0
-):
-    r"""Radiative conductance from the jacket gas to the drum, per metre, W/(m K).
-
-    Two parallel paths (VDI Heat Atlas K1; Hottel's re-radiating surface): the gas radiates to
-    the drum directly, and the casing, heated by the gas by convection and losing little to the
-    outside, re-radiates to the drum. Linearised about the mean temperature
-    :math:`\bar T = (T_g + T_d)/2`, with :math:`h_r = 4\sigma\bar T^3`:
-
-    .. math:: G_{gas} = \varepsilon_g h_r P_d,\qquad
-              G_{casing} = \frac{h_r}{\frac{1 - \varepsilon_d}{\varepsilon_d P_d} + \frac{1}{P_d}
-              + \frac{1 - \varepsilon_c}{\varepsilon_c P_c}}
-
-    :math:`G_{casing}` is in series with the gas-to-casing convection (see :class:`JacketWall`).
-
-    Parameters
-    ----------
-    t_gas, t_drum : float or array, K
-    drum_diameter : float, m
-        Outer diameter of the drum.
-    gap : float, m
-        Width of the annulus (casing diameter = drum + 2 gap).
-    eps_drum, eps_casing : float, -
-        Emissivities of the drum's outer surface and the casing's inner surface.
-    eps_gas : float or array, -
-        Grey emissivity of the jacket gas over the mean beam length :math:`1.8 s` of the gap.
-
-    Returns
-    -------
-    (G_gas, G_casing) : floats or arrays, W/(m K)
-
-    Examples
-    --------
-    >>> g, c = jacket_radiation_conductance(800.0, 700.0, 0.41, 0.05)
-    >>> round(float(c), 2)   # per metre of kiln
-    84.94
-
-    References
-    ----------
-    VDI Heat Atlas, 2nd ed. (2010) K1; H.C. Hottel, A.F. Sarofim, Radiative Transfer (1967).
-    """
-    tm = 0.5 * (np.asarray(t_gas, dtype=float) + np.asarray(t_drum, dtype=float))
-    hr = 4.0 * SIGMA * tm**3
-    p_d = np.pi * drum_diameter
-    p_c = np.pi * (drum_diameter + 2.0 * gap)
-    r_rad = (
-        (1.0 - eps_drum) / (eps_drum * p_d) + 1.0 / p_d + (1.0 - eps_casing) / (eps_casing * p_c)
-    )
-    return eps_gas * hr * p_d, hr / r_rad
 
 
 @dataclass(frozen=True)
@@ -216,11 +61,13 @@ class Jacket:
     (J/(kg K), constant, the rotaryPyrolysis choice) or, with ``composition`` (mole fractions,
     e.g. ``"N2:0.72, CO2:0.09, H2O:0.17, O2:0.02"``), its enthalpy from the gas tables.
     ``htc``: the jacket gas to drum coefficient, W/(m2 K) on the drum perimeter; ``"annulus"``
-    (default) for :func:`annulus_heat_transfer_coefficient` with ``gap`` (m) and the drum wall
+    (default) for :func:`~rotarykiln.heat.jacket.annulus_heat_transfer_coefficient` with
+    ``gap`` (m) and the drum wall
     conduction (``wall_thickness`` m, ``wall_conductivity`` W/(m K)), plus with ``radiation``
     (default True) the radiation of the gas (WSGG of Johansson et al. 2011 when a
     ``composition`` gives its H2O and CO2) and of the re-radiating casing
-    (:func:`jacket_radiation_conductance`, emissivities ``eps_drum`` and ``eps_casing``);
+    (:func:`~rotarykiln.heat.jacket.jacket_radiation_conductance`, emissivities ``eps_drum``
+    and ``eps_casing``);
     ``"wall_at_gas"`` for no resistance (the wall at the jacket gas temperature,
     rotaryPyrolysis). Casing loss
     ``casing_u`` (W/(m2 K)) on ``casing_perimeter`` (m; default the drum perimeter, as the
@@ -330,6 +177,7 @@ class JacketWall:
     TIE = 100.0
 
     def labels(self) -> list[str]:
+        """Name of each wall balance (inner wall, jacket gas)."""
         return ["inner wall", "jacket gas"]
 
     def faces(self, tj):
@@ -436,11 +284,46 @@ class JacketWall:
 
 
 def jacket_balance(kiln, solution) -> dict:
-    """Energy balance of the jacket gas of a solved kiln heated by a jacket (``kiln.wall.jacket``), W.
+    r"""Energy balance of the jacket gas of a solved kiln heated by a jacket, W.
 
-    Returns the jacket duty :math:`\\dot m_j [h_j(T_{in}) - h_j(T_{out})]`, the heat it gave to
-    the drum and to the casing loss (sums over the cells), and the relative closure
-    ``(duty - to_drum - casing) / duty``.
+    The jacket duty :math:`\dot m_j [h_j(T_{in}) - h_j(T_{out})]` against what the jacket gas
+    gave to the drum and lost through the casing (sums over the cells of the converged state):
+    the balance closes to the solver tolerance.
+
+    Parameters
+    ----------
+    kiln : Kiln
+        A kiln heated by a jacket (``kiln.wall.jacket``).
+    solution : KilnSolution
+        Its steady solution (:func:`~rotarykiln.kiln.steady.solve.solve_kiln`).
+
+    Returns
+    -------
+    dict
+        ``duty_W``, ``to_drum_W``, ``casing_loss_W`` (W), ``outlet_temperature_K`` (K) and
+        ``closure_relative`` (-, ``(duty - to_drum - casing) / duty``).
+
+    Examples
+    --------
+    The rotaryPyrolysis kiln (built-in case ``rotary_pyrolysis``), plug flow, 10 cells:
+
+    >>> import warnings
+    >>> from rotarykiln.case import load_case
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> from rotarykiln.kiln.from_case import kiln_from_case
+    >>> from rotarykiln.kiln.steady.solve import solve_kiln
+    >>> case = load_case(builtin_case_path("rotary_pyrolysis"))
+    >>> kiln, _ = kiln_from_case(case.replace({"bed.axial_dispersion": "plug"}))
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     jb = jacket_balance(kiln, solve_kiln(kiln, 10))
+    >>> round(jb["duty_W"] / 1e3, 1), abs(jb["closure_relative"]) < 1e-9
+    (9.2, True)
+
+    References
+    ----------
+    M. Pichler et al., J. Anal. Appl. Pyrolysis 158 (2021) 105171 (the flue-gas jacket of the
+    rotaryPyrolysis kiln).
     """
     x = solution.fluxes["x"]
     j = kiln.wall.jacket

@@ -225,6 +225,7 @@ class ConstantUWall:
     n_temperatures = 1
 
     def labels(self) -> list[str]:
+        """Name of the wall balance (the inner wall)."""
         return ["inner wall"]
 
     def balance(self, q_in, t_wall):

@@ -1,0 +1,192 @@
+"""Write Tscheng's (1978) pilot-kiln runs as built-in cases, one YAML file per run.
+
+Run from the repository root:  PYTHONPATH=src python docs/scripts/make_tscheng_cases.py
+
+Reads the measured table src/rotarykiln/data/tscheng1978/tscheng_pilot_kiln_A11-A54.csv and the
+hand-written case src/rotarykiln/cases/tscheng_A16.yaml as the template, and writes
+src/rotarykiln/cases/tscheng_<run>.yaml for the 43 other runs: the template with the run's
+measured inputs (air flow, speed, incline, fill, solids feed, inlet air temperature = the gas
+reading at 2.32 m) and its measured profiles, every comment kept (the provenance of each
+input), and a header naming the data row. Each written file is read back and compared, field
+by field, with the template's mapping changed by the row; the template itself must carry row
+A16. Each case is then run once (rotarykiln.api.run) and the closures it takes outside their
+validated range are listed in its header (``# Warns:``), as for every built-in kiln case.
+
+``--check`` writes nothing and exits with 1 if a file differs from what would be written.
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import csv
+import re
+import sys
+import tempfile
+import textwrap
+import warnings
+from pathlib import Path
+
+import yaml
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "src/rotarykiln/data/tscheng1978/tscheng_pilot_kiln_A11-A54.csv"
+CASES = ROOT / "src/rotarykiln/cases"
+TEMPLATE_RUN = "A16"
+TEMPLATE = CASES / f"tscheng_{TEMPLATE_RUN}.yaml"
+SCRIPT = "docs/scripts/make_tscheng_cases.py"
+#: Why a range warning of these runs is kept rather than avoided by another closure.
+KEPT = "the fit was made on Tscheng's runs; along the kiln their gas departs from its range"
+
+
+def _num(x: float) -> str:
+    """A number as the data print it (``24.6``, ``535``, ``387.5``)."""
+    return f"{float(x):g}"
+
+
+def read_rows() -> dict[str, dict[str, float]]:
+    """Run id -> the row's numbers (columns as in the CSV)."""
+    with DATA.open(encoding="utf-8", newline="") as fh:
+        return {
+            r["Experiment ID"]: {k: float(v) for k, v in r.items() if k != "Experiment ID"}
+            for r in csv.DictReader(fh)
+        }
+
+
+def run_values(run: str, row: dict[str, float]) -> dict[str, str | float | list[str]]:
+    """The case fields a run sets (dotted path -> value as the YAML file gives it)."""
+    return {
+        "name": f"Tscheng 1978 run {run}",
+        "description": "Hot-air pilot kiln heating Ottawa sand, counter-current "
+        f"(Tscheng 1978, run {run}).",
+        "kiln.slope": f"{_num(row['Incline (degree)'])} deg",
+        "operation.speed": f"{_num(row['RPM'])} rpm",
+        "operation.feed": f"{_num(row['Solid flow (kg/hr)'])} kg/h",
+        "bed.fill": float(_num(row["Solid loading (%)"] / 100.0)),
+        "gas.flow": f"{_num(row['Air flow (kg/hr)'])} kg/h",
+        "gas.temperature": f"{_num(row['T-g-5'])} K",  # the gas reading at 2.32 m
+        "measurements.t_gas": [f"{_num(row[f'T-g-{i}'])} K" for i in range(1, 6)],
+        "measurements.t_bed": [f"{_num(row[f'T-s-{i}'])} K" for i in range(1, 6)],
+        "measurements.t_wall": [f"{_num(row[f'T-w-{i}'])} K" for i in range(1, 5)],
+    }
+
+
+def _yaml_value(value) -> str:
+    if isinstance(value, list):
+        return "[" + ", ".join(value) + "]"
+    return str(value)
+
+
+def _set_line(text: str, path: str, value) -> str:
+    """Replace the value of the one line of ``path``'s key, keeping its indentation and comment."""
+    key = path.rsplit(".", 1)[-1]
+    indent = "  " * path.count(".")
+    pattern = re.compile(rf"^({indent}{key}: )(.*?)(  #.*)?$", re.MULTILINE)
+    matches = pattern.findall(text)
+    if len(matches) != 1:
+        raise SystemExit(f"{TEMPLATE.name}: {len(matches)} lines for {path}, expected one")
+    return pattern.sub(lambda m: m.group(1) + _yaml_value(value) + (m.group(3) or ""), text)
+
+
+def _expected(template: dict, values: dict) -> dict:
+    """The template's mapping with the run's fields set."""
+    out = copy.deepcopy(template)
+    for path, value in values.items():
+        node = out
+        *parents, key = path.split(".")
+        for p in parents:
+            node = node[p]
+        node[key] = value
+    return out
+
+
+def _header_and_body(text: str) -> tuple[list[str], str]:
+    lines = text.splitlines(keepends=True)
+    n = next(i for i, line in enumerate(lines) if not line.startswith("#"))
+    return [line.rstrip("\n") for line in lines[:n]], "".join(lines[n:])
+
+
+def _header(template_header: list[str], run: str, warns: list[str]) -> str:
+    """The template's header for ``run``: its first paragraph replaced by the generation note."""
+    start = next(i for i, line in enumerate(template_header) if line.startswith("# Provenance"))
+    rest = [line.replace(f"row {TEMPLATE_RUN} ", f"row {run} ") for line in template_header[start:]]
+    head = [
+        f"# Tscheng (1978) hot-air pilot kiln, run {run} (data: src/rotarykiln/data/tscheng1978/).",
+        f"# Generated by {SCRIPT} from row {run} of",
+        "# tscheng_pilot_kiln_A11-A54.csv, with tscheng_A16.yaml as the template: regenerate it",
+        "# rather than edit it.",
+    ]
+    return "\n".join(head + warns + rest) + "\n"
+
+
+def _warns(path: Path) -> list[str]:
+    """``# Warns:`` lines of the closures the case takes outside their range."""
+    import rotarykiln.api as rk
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = rk.run(rk.load_case(path))
+    out = []
+    for w in result.closure_warnings:
+        text = f"Warns: {w.field}: {w.value}: {_reason(str(w))} (real, kept: {KEPT})"
+        lines = textwrap.wrap(text, 98, initial_indent="# ", subsequent_indent="#   ")
+        out.extend(lines)
+    others = [t for t in result.warnings if not any(t == str(w) for w in result.closure_warnings)]
+    if others:
+        raise SystemExit(f"{path.name}: warnings other than a closure's range: {others}")
+    return out
+
+
+def _reason(text: str) -> str:
+    """What is out of which range, from a closure warning's text."""
+    what = text.split(" is used outside its range: ", 1)[-1]
+    return what.split(". ", 1)[0].rstrip(".")
+
+
+def build_body(run: str, row: dict, template_text: str, template: dict) -> str:
+    """The YAML of run ``run``'s case below its header: the template's with the row's values."""
+    values = run_values(run, row)
+    body = _header_and_body(template_text)[1]
+    for path, value in values.items():
+        body = _set_line(body, path, value)
+    body = body.replace(f"[measured] row {TEMPLATE_RUN} (", f"[measured] row {run} (")
+    if yaml.safe_load(body) != _expected(template, values):
+        raise SystemExit(f"run {run}: the written case does not read back as its row")
+    return body
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--check", action="store_true", help="write nothing; 1 if a file differs")
+    args = ap.parse_args(argv)
+    rows = read_rows()
+    template_text = TEMPLATE.read_text(encoding="utf-8")
+    template = yaml.safe_load(template_text)
+    template_header = _header_and_body(template_text)[0]
+    if template != _expected(template, run_values(TEMPLATE_RUN, rows[TEMPLATE_RUN])):
+        raise SystemExit(f"{TEMPLATE.name} does not carry row {TEMPLATE_RUN} of {DATA.name}")
+    stale = []
+    for run, row in rows.items():
+        if run == TEMPLATE_RUN:
+            continue
+        path = CASES / f"tscheng_{run}.yaml"
+        body = build_body(run, row, template_text, template)
+        with tempfile.TemporaryDirectory() as tmp:
+            scratch = Path(tmp) / path.name
+            scratch.write_text(_header(template_header, run, []) + body, encoding="utf-8")
+            warns = _warns(scratch)
+        text = _header(template_header, run, warns) + body
+        if args.check:
+            if not path.is_file() or path.read_text(encoding="utf-8") != text:
+                stale.append(path.name)
+            continue
+        path.write_text(text, encoding="utf-8")
+        print(f"wrote {path.relative_to(ROOT)}" + (f" ({len(warns)} Warns)" if warns else ""))
+    if stale:
+        print("out of date:", ", ".join(stale))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
