@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from rotarykiln.kiln.gas_mixture import temperature_of_enthalpy
 from rotarykiln.materials.gas import AIR, parse_composition
 
 __all__ = ["energy_sheet", "exhaust_state", "global_balance"]
@@ -177,11 +178,9 @@ def exhaust_state(res, flows, temperature: float) -> tuple[dict, float]:
         h_gas = res.mixture.species_enthalpy(np.array(t_mix)) @ flows
         h_in = float(h_air)
         total = flows + q_air
-        # temperature of the mixture: invert its enthalpy between the two stream temperatures
+        # temperature of the mixture: its enthalpy inverted between the two stream temperatures
         lo, hi = sorted((float(air.temperature), t_mix))
-        grid = np.linspace(lo, hi, 2001) if hi > lo else np.array([lo, lo + 1.0])
-        h_grid = res.mixture.species_enthalpy(grid) @ total
-        t_mix = float(np.interp(h_air + h_gas, h_grid, grid))
+        t_mix = temperature_of_enthalpy(res.mixture, total, h_air + h_gas, lo, hi, 2001)
     total = flows + q_air
     mm = np.array([res.species[n].molar_mass for n in names])
     moles = total / mm

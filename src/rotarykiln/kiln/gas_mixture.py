@@ -66,6 +66,7 @@ __all__ = [
     "MixtureGas",
     "CANTERA_NAMES",
     "mixture_of",
+    "temperature_of_enthalpy",
     "fit_pieces",
 ]
 
@@ -389,3 +390,42 @@ class MixtureGas:
         p_w = self.pressure * x[..., names.index("H2O")] if "H2O" in names else zero
         p_c = self.pressure * x[..., names.index("CO2")] if "CO2" in names else zero
         return p_w, p_c
+
+
+def temperature_of_enthalpy(mixture, flows, enthalpy, low: float, high: float, points: int):
+    r"""Temperature (K) at which the gas ``flows`` carry the sensible ``enthalpy``: the inverse of
+    the mixture's h(T), linear between ``points`` temperatures from ``low`` to ``high``.
+
+    .. math:: \sum_k \dot m_k h_k(T) = \dot H
+
+    Parameters
+    ----------
+    mixture : GasMixture
+        The gas's property tables (:func:`mixture_of`).
+    flows : array, kg/s
+        Species mass flows, in the mixture's order.
+    enthalpy : float, W
+        Sensible enthalpy flow (0 at 298.15 K).
+    low, high : float, K
+        The temperatures bracketing the answer (the grid's ends; outside them it is clipped).
+    points : int
+        Grid points of the inversion.
+
+    Returns
+    -------
+    float, K
+
+    Examples
+    --------
+    >>> mix = GasMixture.of(("N2",))
+    >>> h = float(mix.species_enthalpy(np.array(1000.0)) @ np.array([1.0]))
+    >>> round(temperature_of_enthalpy(mix, np.array([1.0]), h, 300.0, 2000.0, 1701), 3)
+    1000.0
+
+    References
+    ----------
+    The sensible enthalpy tables of :mod:`rotarykiln.materials.gas` (Cantera, GRI-Mech 3.0).
+    """
+    grid = np.linspace(low, high, points) if high > low else np.array([low, low + 1.0])
+    h = mixture.species_enthalpy(grid) @ np.asarray(flows, dtype=float)
+    return float(np.interp(enthalpy, h, grid))

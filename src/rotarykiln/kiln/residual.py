@@ -54,7 +54,7 @@ from rotarykiln.kiln.exchange import (
     gas_conductance,
     upwind_weight,
 )
-from rotarykiln.kiln.gas_mixture import MixtureGas, mixture_of
+from rotarykiln.kiln.gas_mixture import MixtureGas, mixture_of, temperature_of_enthalpy
 from rotarykiln.kiln.grid import cell_grid
 from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import FULL, BoundaryInputs, Scales
@@ -222,10 +222,10 @@ class KilnResidual:
         k = self.kiln
         hot = k.gas.temperature
         if k.firing.heat_release > 0:
-            t = np.linspace(200.0, 3200.0, 601)
-            h = self.mixture.species_enthalpy(t) @ self.gas_inlet
             target = float(self.mixture.species_enthalpy(k.gas.temperature) @ self.gas_inlet)
-            hot = float(np.interp(target + k.firing.heat_release, h, t))
+            hot = temperature_of_enthalpy(
+                self.mixture, self.gas_inlet, target + k.firing.heat_release, 200.0, 3200.0, 601
+            )
         jacket = k.wall.jacket
         if jacket is not None:
             hot = max(hot, float(jacket.inlet_temperature))

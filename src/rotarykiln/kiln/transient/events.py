@@ -130,15 +130,14 @@ def _flame_gas(burner, diameter, length, gas_names, dissociation=None):
 def _inlet_temperature(flows, gas_names, t_frozen: float, dissociation) -> float:
     """Temperature (K) at which gas tables carrying ``dissociation`` hold the enthalpy of the
     frozen products ``flows`` (kg/s per ``gas_names``) at ``t_frozen``."""
-    from rotarykiln.kiln.gas_mixture import GasMixture
+    from rotarykiln.kiln.gas_mixture import GasMixture, temperature_of_enthalpy
 
     present = [i for i, q in enumerate(flows) if q > 0]
     names = tuple(gas_names[i] for i in present)
     q = np.asarray(flows, dtype=float)[present]
     target = float(GasMixture.of(names).species_enthalpy(np.array(t_frozen)) @ q)
-    grid = np.linspace(200.0, t_frozen, 4001)
-    h = GasMixture.of(names, None, dissociation).species_enthalpy(grid) @ q
-    return float(np.interp(target, h, grid))
+    tables = GasMixture.of(names, None, dissociation)
+    return temperature_of_enthalpy(tables, q, target, 200.0, t_frozen, 4001)
 
 
 class Schedule:
