@@ -16,6 +16,7 @@ import yaml
 import rotarykiln.kiln.bed.residence as residence
 from rotarykiln.case import parse_case
 from rotarykiln.cases import builtin_case_path
+from rotarykiln.commands.kiln_runs import bed_peclet
 from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.steady.solve import solve_kiln
 
@@ -35,8 +36,12 @@ def solved(request):
 
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(residence, "kiln_segregated_conversion", spy)
-        residence.residence_time_effects(case, kiln, sol)
+        residence.residence_time_effects(kiln, sol, peclet=_peclet(case, sol))
     return case, kiln, sol, seen
+
+
+def _peclet(case, sol):
+    return bed_peclet(case, sol.residence_time)[0]
 
 
 def test_bench_segregated_flow_40_classes(benchmark, solved):
@@ -49,5 +54,6 @@ def test_bench_segregated_flow_40_classes(benchmark, solved):
 
 def test_bench_residence_time_effects(benchmark, solved):
     case, kiln, sol, _ = solved
-    eff = benchmark(residence.residence_time_effects, case, kiln, sol)
+    pe = _peclet(case, sol)
+    eff = benchmark(residence.residence_time_effects, kiln, sol, peclet=pe)
     assert 0 < eff.result.segregated <= 1

@@ -18,7 +18,9 @@ from rotarykiln.materials.gas import AIR, parse_composition
 __all__ = ["energy_sheet", "exhaust_state", "global_balance"]
 
 
-def global_balance(res, fluxes, production, tb_n, tg_n, qb, qg, inputs=None) -> dict:
+def global_balance(
+    res, fluxes, production, tb_n, tg_n, qb, qg, inputs=None, *, bed_enthalpy=None
+) -> dict:
     r"""The kiln's global energy balance of a state, W (arrays over the leading batch axis).
 
     .. math:: E_{in} + Q_{release} + Q_{heating} - E_{out} - Q_{loss} - Q_{reaction}
@@ -47,6 +49,8 @@ def global_balance(res, fluxes, production, tb_n, tg_n, qb, qg, inputs=None) -> 
     inputs : BoundaryInputs, optional
         The feed (kg/s per bed species) and the solids speed factor (-) of a transient state;
         default the flows of ``qb`` at the feed face, speed factor 1.
+    bed_enthalpy : array (..., n + 1, n_bed), J/kg, optional
+        The bed species' enthalpies at ``tb_n`` when the caller has them.
 
     Returns
     -------
@@ -76,8 +80,7 @@ def global_balance(res, fluxes, production, tb_n, tg_n, qb, qg, inputs=None) -> 
     dz = res.dz
     s = 1.0 if inputs is None else inputs.speed_factor
     gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
-    hb = res.bed_enthalpy(tb_n)
-    hg = res.mixture.species_enthalpy(tg_n)
+    hb = res.bed_enthalpy(tb_n) if bed_enthalpy is None else bed_enthalpy
     batch = tb_n.shape[:-1]
     n = res.n
     if inputs is None:
@@ -85,8 +88,10 @@ def global_balance(res, fluxes, production, tb_n, tg_n, qb, qg, inputs=None) -> 
     else:
         solids_in = hb[..., 0, :] @ inputs.feed
     solids_out = s * (qb[..., -1, :] * hb[..., -1, :]).sum(-1)
-    gas_in = (qg[..., gi, :] * hg[..., gi, :]).sum(-1)
-    gas_out = (qg[..., go, :] * hg[..., go, :]).sum(-1)
+    ends = tg_n[..., [gi, go]]  # only the ends' gas enthalpies are needed
+    hg = res.mixture.species_enthalpy(ends)
+    gas_in = (qg[..., gi, :] * hg[..., 0, :]).sum(-1)
+    gas_out = (qg[..., go, :] * hg[..., 1, :]).sum(-1)
 
     def total(key):
         return np.broadcast_to(fluxes.get(key, 0.0), batch + (n,)).sum(-1) * dz

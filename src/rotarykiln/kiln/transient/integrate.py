@@ -268,7 +268,7 @@ class TransientKiln:
             d_tr = d_tr + sp[..., 1]
         blk[..., self.nv] = d_tr
         # quadrature: energy and species across the ends, losses, sources
-        flux = self.boundary(u, fl, prod, tb_n, tg_n, qb, qg)
+        flux = self.boundary(u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes)
         dY[:, self.n * self.m :] = flux["acc"]
         dy = dY[0] if single else dY.T
         if fluxes:
@@ -277,16 +277,15 @@ class TransientKiln:
             }
         return dy
 
-    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg):
+    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes=None):
         """Flows across the kiln's boundary (W and kg/s), arrays over the batch: the energy
         terms of :func:`~rotarykiln.kiln.accounting.global_balance`, the species across the
         ends, and the outlets."""
         res = self.res
         s = u.speed_factor
         gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
-        bal = global_balance(
-            res, fl, prod, np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR), qb, qg, u
-        )
+        tb_c, tg_c = np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR)
+        bal = global_balance(res, fl, prod, tb_c, tg_c, qb, qg, u, bed_enthalpy=hb_nodes)
         kb = qb.shape[0]
         net_b = u.feed - s * qb[:, -1]
         net_g = qg[:, gi] - qg[:, go]
@@ -463,8 +462,10 @@ def simulate(
         t0, dt, mass = transient.tracer
         tr_scale = mass if mass is not None else 0.01 * sched.base["feed"] * dt
     blk[:, tk.nv] = rtol * 1e-3 * tr_scale
-    acc_scale = np.concatenate([[1.0 / rtol], np.full(res.nb + res.ng, 1e-9 / rtol)])
-    atol[tk.n * tk.m :] = rtol * acc_scale
+    # the quadratures: 1 J of energy; of each species, what its phase carries through the kiln
+    # in rtol seconds (the element closure is judged over the throughput)
+    flows = np.concatenate([np.full(res.nb, res.bed_scale), np.full(res.ng, res.gas_scale)])
+    atol[tk.n * tk.m :] = np.concatenate([[1.0], rtol * flows])
     run = _Run()
     from rotarykiln.progress import progress_bar, progress_enabled
 
