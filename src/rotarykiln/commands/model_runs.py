@@ -21,15 +21,6 @@ from typing import Any
 import numpy as np
 
 from rotarykiln.errors import InputError, check_positive
-from rotarykiln.rtd.correlations import (
-    bongo_njeng_dispersion,
-    holdup_fraction,
-    sai_dispersion_number,
-    sherritt_dispersion,
-)
-from rotarykiln.rtd.dispersion import get_model
-from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
-from rotarykiln.rtd.predict import RTDPrediction, check_peclet, predict_rtd, tau_and_peclet
 
 __all__ = [
     "ModelRun",
@@ -188,6 +179,16 @@ def _need(value, field: str, why: str):
 
 def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
     """Peclet number of a case from ``rtd.peclet`` or the chosen correlation, and its source."""
+    from rotarykiln.rtd.correlations import (
+        bongo_njeng_dispersion,
+        holdup_fraction,
+        sai_dispersion_number,
+        sherritt_dispersion,
+    )
+    from rotarykiln.rtd.dispersion import get_model
+    from rotarykiln.rtd.internals import lifter_cross_section, loading_lifter_area
+    from rotarykiln.rtd.predict import check_peclet, tau_and_peclet
+
     sec, kiln, op, mat = case.rtd, case.kiln, case.operation, case.material
     if sec.peclet is not None:
         check_peclet("rtd.peclet", sec.peclet)
@@ -247,7 +248,7 @@ def peclet_from_case(case, mean_residence_time: float) -> tuple[float, str]:
     return pe, name
 
 
-def predict_from_case(case, *, transport: Callable | None = None) -> RTDPrediction:
+def predict_from_case(case, *, transport: Callable | None = None):
     """Predicted E(t) of the kiln of a case (its ``rtd`` section).
 
     Parameters
@@ -262,6 +263,8 @@ def predict_from_case(case, *, transport: Callable | None = None) -> RTDPredicti
     -------
     RTDPrediction
     """
+    from rotarykiln.rtd.predict import predict_rtd
+
     sec = case.rtd
     if sec is None:
         raise InputError("rtd", "missing", "an rtd: section in the case")
