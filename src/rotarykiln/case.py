@@ -358,11 +358,37 @@ def _fuel_composition(v: Any) -> str:
 GasFlowText = Annotated[Any, BeforeValidator(_gas_flow_text)]
 
 
+def _oxidiser_composition(v: Any) -> str:
+    """An oxidiser stream's composition by mole: known gases, with O2 in it."""
+    text = _fuel_composition(v)
+    from rotarykiln.materials.gas import parse_composition
+
+    x = dict(parse_composition(text))
+    if not x.get("O2", 0.0) > 0:
+        raise PydanticCustomError(
+            "number",
+            "{value} holds no O2: an oxidiser stream needs O2 (air is O2:0.2095, N2:0.7808, "
+            "AR:0.0097)",
+            {"value": text},
+        )
+    return text
+
+
 class BurnerAir(Section):
-    """An air stream of the burner: its flow (mass, molar or normal volume) and temperature."""
+    """An air stream of the burner: its flow (mass, molar or normal volume), temperature and
+    composition by mole (default dry air; O2-enriched air ``"O2:0.3, N2:0.7"``, pure oxygen
+    ``"O2:1"``, recirculated flue gas with its O2)."""
 
     flow: GasFlowText
     temperature: Temperature = 298.15
+    composition: Annotated[str, BeforeValidator(_oxidiser_composition)] | None = None
+
+    @property
+    def gas(self) -> str:
+        """The stream's composition (Cantera text): the given one or dry air."""
+        from rotarykiln.materials.gas import AIR
+
+        return self.composition or AIR
 
 
 class Burner(Section):
@@ -430,7 +456,13 @@ class Burner(Section):
 
     def mass_flows(self) -> tuple[float, float, float]:
         """Fuel, primary air and secondary air mass flows, kg/s (refused: no air, bad flows)."""
-        from rotarykiln.materials.gas import AIR_MOLAR_MASS, AIR_O2, molar_mass
+        from rotarykiln.materials.gas import (
+            AIR_MOLAR_MASS,
+            AIR_O2,
+            fuel_data,
+            molar_mass,
+            parse_composition,
+        )
         from rotarykiln.units import gas_flow
 
         def convert(name, value, mm, allow_zero=False):
@@ -452,21 +484,34 @@ class Burner(Section):
                 "fuel without air: give primary_air (and secondary_air) with their flows",
                 {},
             )
-        air_mm = AIR_MOLAR_MASS
+
+        def mm(stream):
+            return AIR_MOLAR_MASS if stream.composition is None else molar_mass(stream.gas)
+
+        def o2(stream):
+            if stream.composition is None:
+                return AIR_O2
+            x = dict(parse_composition(stream.gas))
+            return x["O2"] / sum(x.values())
+
         fuel = convert("fuel_flow", self.fuel_flow, molar_mass(self.fuel))
         prim = sec = 0.0
+        o2_supplied = 0.0  # mol/s
         if self.primary_air is not None:
-            prim = convert("primary_air.flow", self.primary_air.flow, air_mm, True)
+            a = self.primary_air
+            prim = convert("primary_air.flow", a.flow, mm(a), True)
+            o2_supplied += prim / mm(a) * o2(a)
         if self.secondary_air is not None:
-            sec = convert("secondary_air.flow", self.secondary_air.flow, air_mm, True)
+            a = self.secondary_air
+            sec = convert("secondary_air.flow", a.flow, mm(a), True)
+            o2_supplied += sec / mm(a) * o2(a)
         if prim + sec <= 0:
             raise PydanticCustomError(
                 "number", "fuel without air: the air flows sum to 0 (a flame needs air)", {}
             )
-        from rotarykiln.materials.gas import fuel_data, parse_composition
-
         o2_demand = fuel_data(parse_composition(self.fuel))[1]  # mol O2 per mol of fuel
-        stoichiometric = fuel / molar_mass(self.fuel) * o2_demand / AIR_O2 * air_mm  # kg/s
+        ratio = o2_supplied / (fuel / molar_mass(self.fuel) * o2_demand)  # the air ratio
+        stoichiometric = (prim + sec) / ratio  # kg/s of these streams that burn the fuel
         if prim + sec < stoichiometric * (1.0 - 1e-9):
             raise PydanticCustomError(
                 "number",

@@ -307,11 +307,15 @@ def _event_value(label, variable, value, kiln):
             raise InputError(field, message=f"{field}: {show_value(value)} is not stop or run")
         return value
     if variable in BURNER_VARIABLES:
-        from rotarykiln.materials.gas import AIR, molar_mass
+        from rotarykiln.materials.gas import molar_mass
 
-        comp = kiln.firing.flame.burner.fuel if variable == "fuel_flow" else AIR
+        burner = kiln.firing.flame.burner
+        if variable == "fuel_flow":
+            mm = molar_mass(burner.fuel)
+        else:  # an air stream keeps its composition
+            mm = getattr(burner, variable).molar_mass
         flow = gas_flow(value, field, allow_zero=variable != "fuel_flow")
-        return flow.mass_flow(molar_mass(comp))
+        return flow.mass_flow(mm)
     v = check_quantity(field, value, VARIABLE_RANGES[variable])
     if not v > 0:  # a flow of 0 (the ranges of the case accept a zero feed)
         accepted = "> 0 kg/s"

@@ -421,13 +421,12 @@ def burner_from_case(section, counter_current: bool = True) -> Burner:
     (2.0, 40.0)
     """
     fuel, primary, secondary = section.mass_flows()
-    t_p = section.primary_air.temperature if section.primary_air is not None else 298.15
-    t_s = section.secondary_air.temperature if section.secondary_air is not None else 298.15
+    p, s = section.primary_air, section.secondary_air
     return Burner(
         fuel=section.fuel,
         fuel_flow=fuel,
-        primary_air=AirStream(primary, t_p),
-        secondary_air=AirStream(secondary, t_s),
+        primary_air=AirStream(primary, *((p.temperature, p.gas) if p else ())),
+        secondary_air=AirStream(secondary, *((s.temperature, s.gas) if s else ())),
         fuel_temperature=section.fuel_temperature,
         nozzle_diameter=section.nozzle_diameter,
         combustion=section.combustion,

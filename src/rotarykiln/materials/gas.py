@@ -404,7 +404,12 @@ class BurntGas:
 
 
 def burn_fuel(
-    fuel, fuel_flow: float, air_flow: float, fuel_temperature=298.15, air_temperature=298.15
+    fuel,
+    fuel_flow: float,
+    air_flow: float,
+    fuel_temperature=298.15,
+    air_temperature=298.15,
+    air=AIR,
 ) -> BurntGas:
     """Burn ``fuel`` completely with air (Cantera, GRI-Mech 3.0 thermochemistry), 1 atm.
 
@@ -415,6 +420,8 @@ def burn_fuel(
     fuel_flow, air_flow : float, kg/s
         Mass flows of fuel and combustion air.
     fuel_temperature, air_temperature : float, K
+    air : str
+        The oxidiser's composition by mole (default :data:`AIR`; O2-enriched air, O2, ...).
 
     Returns
     -------
@@ -442,19 +449,26 @@ def burn_fuel(
         float(air_flow),
         float(fuel_temperature),
         float(air_temperature),
+        *(() if air == AIR else (parse_composition(air),)),
     )
     return BurntGas(comp, fuel_flow + air_flow, t_in, t_ad, q, gas_table(comp))
 
 
 @lru_cache(maxsize=1024)
-def _burn(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature):
+def _burn(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, *air):
     """Products, inlet and adiabatic temperatures (K) and heat release (W) of
-    :func:`burn_fuel`: in memory, else on disk, else computed (:func:`_burn_state`)."""
-    key = _cache_key("burn", fuel, fuel_flow, air_flow, fuel_temperature, air_temperature)
+    :func:`burn_fuel`: in memory, else on disk, else computed (:func:`_burn_state`).
+    ``air``: the oxidiser's (species, mole fraction) pairs when it is not :data:`AIR`."""
+    key = _cache_key("burn", fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, *air)
     a = _cache.load("burn", key)
     if a is None:
         comp, t_in, t_ad, q = _burn_state(
-            fuel, fuel_flow, air_flow, fuel_temperature, air_temperature
+            fuel,
+            fuel_flow,
+            air_flow,
+            fuel_temperature,
+            air_temperature,
+            air=dict(air[0]) if air else AIR,
         )
         a = {
             "species": np.array([k for k, _ in comp]),
@@ -467,9 +481,10 @@ def _burn(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature):
     return comp, t_in, t_ad, q
 
 
-def _burn_state(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, gas=None):
+def _burn_state(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, gas=None, air=AIR):
     """Cantera's part of :func:`burn_fuel` (``gas``: a GRI-Mech 3.0 solution, default
-    :func:`gri30`): the products' composition, ``t_in``, ``t_ad`` (K) and heat release (W)."""
+    :func:`gri30`; ``air``: the oxidiser by mole): the products' composition, ``t_in``,
+    ``t_ad`` (K) and heat release (W)."""
     import cantera as ct
     from scipy.optimize import brentq
 
@@ -480,7 +495,7 @@ def _burn_state(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, ga
     # state: both streams can share one solution.
     gas.TPX = fuel_temperature, 101325.0, fuel_x
     qf = ct.Quantity(gas, mass=fuel_flow, constant="HP")
-    gas.TPX = air_temperature, 101325.0, AIR
+    gas.TPX = air_temperature, 101325.0, air
     qa = ct.Quantity(gas, mass=air_flow, constant="HP")
     mix = qf + qa
     t_in = float(mix.T)

@@ -80,11 +80,13 @@ from rotarykiln.materials.gas import (
     T_REF,
     BurntGas,
     burn_fuel,
+    molar_mass,
     parse_composition,
 )
 
 __all__ = [
     "AirStream",
+    "mixed_oxidiser",
     "Burner",
     "Flame",
     "fire",
@@ -103,15 +105,52 @@ H2O_VAPORISATION = 44.004e3  # J/mol at 298.15 K
 
 @dataclass(frozen=True)
 class AirStream:
-    """An air stream into the burner end: ``flow`` (kg/s) and ``temperature`` (K)."""
+    """An oxidiser stream into the burner end: ``flow`` (kg/s), ``temperature`` (K) and
+    ``composition`` by mole (default :data:`~rotarykiln.materials.gas.AIR`; O2-enriched air,
+    pure O2, recirculated flue gas with its O2)."""
 
     flow: float
     temperature: float = T_REF
+    composition: str = AIR
 
     def __post_init__(self):
         if not np.isfinite(self.flow) or self.flow < 0:
             raise InputError("burner.air.flow", self.flow, ">= 0 kg/s")
         check_positive("burner.air.temperature", self.temperature, "K")
+
+    @property
+    def molar_mass(self) -> float:
+        """Molar mass of the stream, kg/mol."""
+        return AIR_MOLAR_MASS if self.composition == AIR else molar_mass(self.composition)
+
+    @property
+    def o2_fraction(self) -> float:
+        """O2 mole fraction of the stream, -."""
+        return AIR_O2 if self.composition == AIR else _o2_fraction(self.composition)
+
+    @property
+    def moles(self) -> float:
+        """Molar flow, mol/s."""
+        return self.flow / self.molar_mass
+
+
+def _o2_fraction(composition: str) -> float:
+    x = dict(parse_composition(composition))
+    return float(x.get("O2", 0.0)) / float(sum(x.values()))
+
+
+def mixed_oxidiser(streams) -> str:
+    """The composition by mole of oxidiser ``streams`` (:class:`AirStream`) mixed, as Cantera
+    text (:data:`~rotarykiln.materials.gas.AIR` itself when every stream is air)."""
+    flowing = [s for s in streams if s.flow > 0]
+    if all(s.composition == AIR for s in flowing):
+        return AIR
+    moles: dict[str, float] = {}
+    for s in flowing:
+        for name, x in parse_composition(s.composition):
+            moles[name] = moles.get(name, 0.0) + s.moles * x
+    total = sum(moles.values())
+    return ", ".join(f"{k}:{v / total:.12g}" for k, v in sorted(moles.items()))
 
 
 @dataclass(frozen=True)
@@ -327,7 +366,7 @@ def _mix_air_temperature(streams) -> float:
     total = None
     for s in flows:
         g = ct.Solution(MECHANISM)
-        g.TPX = s.temperature, 101325.0, AIR
+        g.TPX = s.temperature, 101325.0, s.composition
         q = ct.Quantity(g, mass=s.flow, constant="HP")  # not the default UV (a rigid vessel)
         total = q if total is None else total + q
     return float(total.T)
@@ -372,12 +411,13 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     mm_fuel, o2_demand, lhv, hhv = _fuel_data(fuel)
     air = sum(a.flow for a in burner.flame_air)
     t_air = _mix_air_temperature(burner.flame_air)
-    products = burn_fuel(fuel, burner.fuel_flow, air, burner.fuel_temperature, t_air)
-    n_fuel = burner.fuel_flow / mm_fuel
-    n_stoich_air = n_fuel * o2_demand / AIR_O2
-    if n_stoich_air > 0:
-        lam = air / AIR_MOLAR_MASS / n_stoich_air
-        lam_p = burner.primary_air.flow / AIR_MOLAR_MASS / n_stoich_air
+    oxidiser = mixed_oxidiser(burner.flame_air)
+    products = burn_fuel(fuel, burner.fuel_flow, air, burner.fuel_temperature, t_air, oxidiser)
+    n_o2_needed = burner.fuel_flow / mm_fuel * o2_demand
+    if n_o2_needed > 0:  # the air ratio: O2 supplied over O2 needed
+        lam = sum(a.moles * a.o2_fraction for a in burner.flame_air) / n_o2_needed
+        p = burner.primary_air
+        lam_p = p.moles * p.o2_fraction / n_o2_needed
     else:
         lam = lam_p = float("inf")
     sensible = products.mass_flow * float(products.table.enthalpy(products.inlet_temperature))
@@ -437,18 +477,20 @@ def _check_length(what: str, given, value, needed: bool, kiln_length) -> None:
 
 def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
     """Thring-Newby / Ricou-Spalding jet numbers and the HWH flame length (see the module)."""
-    m0 = burner.fuel_flow + burner.primary_air.flow
-    n0 = burner.fuel_flow / mm_fuel + burner.primary_air.flow / AIR_MOLAR_MASS
+    prim, sec = burner.primary_air, burner.secondary_air
+    m0 = burner.fuel_flow + prim.flow
+    n0 = burner.fuel_flow / mm_fuel + prim.moles
     mm0 = m0 / n0
     # nozzle-fluid temperature: fuel and primary air mixed at constant heat capacity per mole
     nf = burner.fuel_flow / mm_fuel
-    na = burner.primary_air.flow / AIR_MOLAR_MASS
+    na = prim.moles
     t0 = (nf * burner.fuel_temperature + na * burner.primary_air.temperature) / (nf + na)
     rho0 = 101325.0 * mm0 / (R_UNIVERSAL * t0)
     d0 = burner.nozzle_diameter
     u0 = m0 / (rho0 * np.pi * d0**2 / 4.0)
     t_s = burner.secondary_air.temperature if burner.secondary_air.flow > 0 else t0
-    rho_a = 101325.0 * AIR_MOLAR_MASS / (R_UNIVERSAL * t_s)
+    mm_s = sec.molar_mass if sec.flow > 0 else AIR_MOLAR_MASS
+    rho_a = 101325.0 * mm_s / (R_UNIVERSAL * t_s)
     de = 2.0 * m0 / np.sqrt(np.pi * rho_a * m0 * u0)
     ma = burner.secondary_air.flow
     theta = (1.0 + ma / m0) * de / kiln_diameter
@@ -457,13 +499,17 @@ def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
     # flame length of the nozzle fluid (fuel + primary air) burning with the surroundings
     if lam_p >= 1.0:
         c_t = 1.0
-        t_f = _adiabatic(fuel, burner.fuel_flow, burner.primary_air.flow, burner, t0)
+        t_f = _adiabatic(fuel, burner.fuel_flow, prim.flow, burner, t0, prim.composition)
     else:
-        n_add = (1.0 - lam_p) * (burner.fuel_flow / mm_fuel) * _fuel_data(fuel)[1] / AIR_O2
+        # the surroundings (secondary air) supply the rest of the O2
+        surround = sec if sec.flow > 0 else AirStream(0.0)
+        n_add = (1.0 - lam_p) * (burner.fuel_flow / mm_fuel) * _fuel_data(fuel)[1]
+        n_add /= surround.o2_fraction
         c_t = n0 / (n0 + n_add)
-        m_add = n_add * AIR_MOLAR_MASS
-        t_f = _adiabatic(fuel, burner.fuel_flow, burner.primary_air.flow + m_add, burner, t0)
-    hwh = hawthorne_flame_length(d0, c_t, t_f, t0, AIR_MOLAR_MASS, mm0)
+        m_add = n_add * surround.molar_mass
+        mixed = mixed_oxidiser((prim, AirStream(m_add, t0, surround.composition)))
+        t_f = _adiabatic(fuel, burner.fuel_flow, prim.flow + m_add, burner, t0, mixed)
+    hwh = hawthorne_flame_length(d0, c_t, t_f, t0, mm_s, mm0)
     jet = dict(
         equivalent_diameter=float(de),
         nozzle_velocity=float(u0),
@@ -475,8 +521,8 @@ def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
     return jet, hwh
 
 
-def _adiabatic(fuel, fuel_flow, air_flow, burner, t_air) -> float:
+def _adiabatic(fuel, fuel_flow, air_flow, burner, t_air, oxidiser=AIR) -> float:
     """Adiabatic temperature of ``fuel`` burnt with ``air_flow`` (frozen products), K."""
     return burn_fuel(
-        fuel, fuel_flow, air_flow, burner.fuel_temperature, t_air
+        fuel, fuel_flow, air_flow, burner.fuel_temperature, t_air, oxidiser
     ).adiabatic_temperature
