@@ -143,7 +143,7 @@ def test_misspelt_key_in_a_list_item_lists_the_accepted_keys():
         parse_case(data)
     assert str(info.value).startswith(
         'wall.lining.0.thicknes: unknown key, did you mean "thickness"? '
-        "(accepted keys: material, thickness, absent)"
+        "(accepted keys: material, thickness, absent, thickness_profile)"
     )
 
 

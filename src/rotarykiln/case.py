@@ -176,6 +176,8 @@ def quantity(
 # 1e-308 or 1e300 reaches a solver. The message shows the range in the unit most people type.
 Length = quantity("length", ge=1e-6, le=1e4, shown="in [1 um, 10 km]")
 Position = quantity("length", ge=0, le=1e4, shown="in [0, 10 km]")
+#: A lining layer's local thickness (0: the layer is absent there).
+LayerThickness = quantity("length", ge=0, le=10.0, shown="in [0, 10 m]")
 Angle = quantity("angle", ge=-math.pi / 2, le=math.pi / 2, shown="in [-90, 90] deg")
 RotationRate = quantity(
     "rotation rate", ge=1e-6, le=100.0, shown="in [1e-5 rpm, 955 rpm] (1e-6 to 100 rad/s)"
@@ -328,12 +330,32 @@ def _k_coefficients(v: Any) -> list[float]:
 
 
 class LiningLayer(Section):
-    """One lining layer (``wall.lining``): a library material (or one
-    given inline), a thickness and the stretches (from z, to z) where it is absent."""
+    """One lining layer (``wall.lining``): a library material (or one given inline), a
+    thickness and the stretches (from z, to z) where it is absent; or, for a layer whose
+    thickness varies along the kiln (a coating built up in the burning zone, a worn brick),
+    ``thickness_profile``: ``[z, thickness]`` pairs, linear between them, constant beyond,
+    the layer absent where its thickness is 0."""
 
     material: LiningMaterialName | LiningMaterialSpec
-    thickness: Length
+    thickness: Length | None = None
     absent: list[tuple[Position, Position]] = []
+    thickness_profile: list[tuple[Position, LayerThickness]] | None = None
+
+    @model_validator(mode="after")
+    def _one_thickness(self):
+        if (self.thickness is None) == (self.thickness_profile is None):
+            raise PydanticCustomError(
+                "number", "give thickness or thickness_profile, one of them", {}
+            )
+        if self.thickness_profile is not None:
+            z = [p for p, _ in self.thickness_profile]
+            if not all(b > a for a, b in zip(z, z[1:], strict=False)):
+                raise PydanticCustomError(
+                    "number", "thickness_profile positions must increase along the kiln", {}
+                )
+            if not max(t for _, t in self.thickness_profile) > 0:
+                raise PydanticCustomError("number", "thickness_profile is 0 everywhere", {})
+        return self
 
 
 def _gas_flow_text(v: Any) -> Any:

@@ -571,14 +571,17 @@ def layers_from_case(lining, section: str = "wall") -> tuple[Layer, ...]:
             return load_lining_material(spec)
         return LiningMaterial(spec.name, tuple(spec.k), spec.emissivity, spec.t_max)
 
-    layers = tuple(
-        Layer(
-            material(layer.material),
-            layer.thickness,
-            absent=tuple(tuple(a) for a in layer.absent),
-        )
-        for layer in lining or ()
-    )
+    def layer_of(spec):
+        profile = None
+        thickness = spec.thickness
+        if spec.thickness_profile is not None:
+            z, t = zip(*spec.thickness_profile, strict=True)
+            profile = (tuple(z), tuple(t))
+            thickness = max(t)
+        absent = tuple(tuple(a) for a in spec.absent)
+        return Layer(material(spec.material), thickness, absent=absent, profile=profile)
+
+    layers = tuple(layer_of(spec) for spec in lining or ())
     if not layers:
         raise InputError(f"{section}.lining", "[]", "a list of at least one layer")
     return layers

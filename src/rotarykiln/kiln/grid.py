@@ -160,7 +160,7 @@ def cell_grid(
     present = np.array([layer.present(z) for layer in layers]).reshape(len(layers), n)
     thick = np.array(
         [
-            np.where(p, layer.thickness, ABSENT_LAYER_THICKNESS)
+            np.where(p, layer.thickness_at(z), ABSENT_LAYER_THICKNESS)
             for layer, p in zip(layers, present, strict=True)
         ]
     ).reshape(len(layers), n)

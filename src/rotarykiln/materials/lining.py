@@ -58,18 +58,32 @@ class LiningMaterial:
 
 @dataclass(frozen=True)
 class Layer:
-    """One lining layer: a material and a thickness (m), optionally absent on axial stretches.
+    """One lining layer: a material and a thickness (m), optionally absent on axial stretches
+    or with a thickness that varies along the kiln.
 
     ``absent`` is a tuple of ``(z_start, z_end)`` ranges (m from the solids inlet) where the
-    layer is missing (e.g. an uninsulated stretch of shell).
+    layer is missing (e.g. an uninsulated stretch of shell). ``profile``: ``(z, thickness)``,
+    two tuples of positions (m, increasing) and thicknesses (m, >= 0), linear between them and
+    constant beyond (e.g. a coating built up in the burning zone); ``thickness`` is then the
+    largest of them. Where a profile gives 0 the layer is absent.
     """
 
     material: LiningMaterial
     thickness: float
     absent: tuple[tuple[float, float], ...] = ()
+    profile: tuple[tuple[float, ...], tuple[float, ...]] | None = None
 
     def __post_init__(self):
-        check_positive(f"lining.{self.material.name}.thickness", self.thickness, "m")
+        name = f"lining.{self.material.name}"
+        check_positive(f"{name}.thickness", self.thickness, "m")
+        if self.profile is not None:
+            z, t = (np.asarray(a, dtype=float) for a in self.profile)
+            if z.ndim != 1 or z.shape != t.shape or z.size < 1:
+                raise InputError(f"{name}.profile", self.profile, "positions and thicknesses")
+            if not (np.all(np.isfinite(z)) and np.all(np.diff(z) > 0)):
+                raise InputError(f"{name}.profile", z.tolist(), "increasing positions (m)")
+            if not (np.all(np.isfinite(t)) and np.all(t >= 0) and t.max() > 0):
+                raise InputError(f"{name}.profile", t.tolist(), "thicknesses >= 0 m, not all 0")
         for a, b in self.absent:
             if not b > a:
                 raise InputError(
@@ -82,7 +96,32 @@ class Layer:
         mask = np.ones(z.shape, dtype=bool)
         for a, b in self.absent:
             mask &= ~((z >= a) & (z <= b))
+        if self.profile is not None:
+            mask &= self.thickness_at(z) > 0
         return mask
+
+    def thickness_at(self, z):
+        """Thickness (m) at positions ``z`` (m): the constant one, or the profile's.
+
+        Examples
+        --------
+        >>> coating = Layer(LiningMaterial("coating", (1.0, 0.0, 0.0), 0.9, 1800.0), 0.2,
+        ...                 profile=((20.0, 30.0, 40.0), (0.0, 0.2, 0.0)))
+        >>> coating.thickness_at([10.0, 25.0, 30.0]).tolist()
+        [0.0, 0.1, 0.2]
+        """
+        z = np.asarray(z, dtype=float)
+        if self.profile is None:
+            return np.full(z.shape, self.thickness)
+        zp, tp = (np.asarray(a, dtype=float) for a in self.profile)
+        return np.interp(z, zp, tp)
+
+    def divided(self, m: int) -> Layer:
+        """One of ``m`` equal sub-layers of the layer (its profile divided too)."""
+        profile = None
+        if self.profile is not None:
+            profile = (self.profile[0], tuple(float(t) / m for t in self.profile[1]))
+        return Layer(self.material, self.thickness / m, self.absent, profile)
 
 
 def lining_material_names() -> list[str]:

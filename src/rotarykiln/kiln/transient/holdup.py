@@ -34,7 +34,6 @@ O. Levenspiel, Chemical Reaction Engineering, 3rd ed., ch. 14 (tanks in series).
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -121,7 +120,7 @@ def refine_lining(layers, max_spacing: float = DEFAULT_NODE_SPACING):
     out, parent = [], []
     for i, layer in enumerate(layers):
         m = max(1, math.ceil(layer.thickness / max_spacing - 1e-9))
-        out += [dataclasses.replace(layer, thickness=layer.thickness / m)] * m
+        out += [layer.divided(m)] * m
         parent += [i] * m
     return tuple(out), tuple(parent)
 
