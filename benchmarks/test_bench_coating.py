@@ -23,4 +23,4 @@ def test_bench_coating_estimate_60_stations(benchmark):
                 return _estimate(scan)
 
         r = benchmark.pedantic(run, rounds=3, iterations=1)
-    assert r.success
+    assert r.result.success

@@ -1,6 +1,6 @@
 """Coating thickness along the kiln estimated from a shell scan (issue 26, "Coating and rings"):
-the calibration machinery (:func:`rotarykiln.studies.calibration.calibrate`) fits the coating's
-``thickness_profile`` knots of a case to shell temperatures (z, T), with an interval per zone.
+:func:`rotarykiln.studies.coating.estimate_coating` fits the coating's ``thickness_profile`` knots
+of a case to shell temperatures (z, T) by the calibration machinery, with an interval per zone.
 
 Synthetic scans: Barr's T4 kiln with a known coating (40 / 80 / 30 mm at 3.0 / 3.6 / 4.2 m, none
 before 2.4 m and after 4.8 m), its computed shell temperatures at 60 stations plus Gaussian
@@ -19,10 +19,9 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
-from scipy.stats import norm
 
 from rotarykiln.cases import builtin_case_path
-from rotarykiln.studies.calibration import calibrate
+from rotarykiln.studies.coating import estimate_coating
 from rotarykiln.studies.models import kiln_profile_model
 
 KNOTS = (3.0, 3.6, 4.2)  # m, the zones estimated
@@ -58,10 +57,7 @@ def _estimate(scan: np.ndarray):
     data = pd.DataFrame(
         {"quantity": "shell_temperature", "z": STATIONS, "value": scan, "uncertainty": NOISE}
     )
-    params = [
-        f"wall.lining.0.thickness_profile.{i + 2}.1=50 mm [0 mm, 300 mm]" for i in range(len(KNOTS))
-    ]
-    return calibrate(kiln_profile_model, _case((50.0,) * len(KNOTS)), params, data)
+    return estimate_coating(_case((50.0,) * len(KNOTS)), data, bounds=("0 mm", "300 mm"))
 
 
 @pytest.fixture(scope="module")
@@ -83,15 +79,23 @@ def test_the_scan_sees_the_coating(clean_scan):
 
 
 def test_the_estimate_holds_the_true_profile_in_its_intervals(clean_scan):
-    z = norm.ppf(1.0 - (1.0 - 0.95 ** (1.0 / len(KNOTS))) / 2.0)  # Sidak: joint 95 %
+    truth = np.array(TRUE) * 1e-3  # m
     inside = 0
     for seed in range(20):
         rng = np.random.default_rng(seed)
         scan = clean_scan + rng.normal(0.0, NOISE, STATIONS.size)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            r = _estimate(scan)
-        assert r.success
-        half = z * r.stderr
-        inside += bool(np.all(np.abs(r.x - np.array(TRUE)) <= half))
+            est = _estimate(scan)
+        assert est.result.success and est.level == 0.95
+        np.testing.assert_allclose(est.z, KNOTS)
+        inside += bool(np.all((est.low <= truth) & (truth <= est.high)))
     assert inside >= 18
+
+
+def test_the_estimate_is_plotted_over_the_scan(clean_scan):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fig = _estimate(clean_scan).plot()
+    top, bottom = fig.axes
+    assert len(top.lines) >= 1 and bottom.get_xlabel() == "z (m)"

@@ -140,8 +140,32 @@ def _o2_fraction(composition: str) -> float:
 
 
 def mixed_oxidiser(streams) -> str:
-    """The composition by mole of oxidiser ``streams`` (:class:`AirStream`) mixed, as Cantera
-    text (:data:`~rotarykiln.materials.gas.AIR` itself when every stream is air)."""
+    r"""The composition by mole of oxidiser streams mixed, as Cantera text.
+
+    .. math:: x_k = \frac{\sum_s \dot n_s x_{k,s}}{\sum_s \dot n_s}
+
+    Parameters
+    ----------
+    streams : sequence of AirStream
+        The streams (their flows, kg/s, and compositions by mole).
+
+    Returns
+    -------
+    str
+        Mole fractions, dimensionless (:data:`~rotarykiln.materials.gas.AIR` itself when every
+        stream that flows is air).
+
+    Examples
+    --------
+    >>> o2 = AirStream(0.031999, 298.15, "O2:1")  # 1 mol/s
+    >>> mixed_oxidiser((AirStream(1.0), o2)) == AIR, mixed_oxidiser((AirStream(1.0),)) == AIR
+    (False, True)
+
+    References
+    ----------
+    Ideal-gas mixing by moles (e.g. S.R. Turns, An Introduction to Combustion, 3rd ed. (2012),
+    ch. 2).
+    """
     flowing = [s for s in streams if s.flow > 0]
     if all(s.composition == AIR for s in flowing):
         return AIR
