@@ -356,17 +356,34 @@ class Kiln:
         ...     omega=0.157, fill=0.17)
         >>> k.replace(bed__dispersion=1e-5, closures__radiation=False).bed.dispersion
         1e-05
+        >>> k.replace(bed__dispersoin=1e-5)  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        rotarykiln.errors.InputError: Kiln.replace: ...bed__dispersoin... a field of bed: fill, ...
         """
+        names = [f.name for f in dataclasses.fields(self)]
         nested: dict[str, dict] = {}
         whole = {}
         for key, value in branches.items():
             branch, sep, name = key.partition("__")
+            if branch not in names:
+                raise InputError("Kiln.replace", key, "a branch of " + ", ".join(names))
             if sep:
                 nested.setdefault(branch, {})[name] = value
             else:
                 whole[branch] = value
         for branch, changes in nested.items():
             base = whole.get(branch, getattr(self, branch))
+            fields = (
+                [f.name for f in dataclasses.fields(base)] if dataclasses.is_dataclass(base) else []
+            )
+            for name in changes:
+                if name not in fields:
+                    raise InputError(
+                        "Kiln.replace",
+                        f"{branch}__{name}",
+                        f"a field of {branch}: " + ", ".join(fields),
+                    )
             whole[branch] = dataclasses.replace(base, **changes)
         return dataclasses.replace(self, **whole)
 
