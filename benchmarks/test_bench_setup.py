@@ -8,6 +8,14 @@
 - ``test_bench_run_barr_T4_process``: the whole ``rotarykiln run barr_T4 --no-plots`` as a
   subprocess with a warm disk cache (the second run of a case); target <= 1.0 s.
 - ``test_bench_parse_build_cold_tables``: the same with every cache emptied, for reference.
+- ``test_bench_case_with_build_tscheng_A16``: a study's variant of a hot-air kiln, made with
+  :func:`rotarykiln.case.case_with` (a new speed and gas flow every round, texts never seen
+  before) and built (:func:`kiln_from_case`); target: median <= 2 ms.
+- ``test_bench_case_with_build_barr_T4``: the same for the fired Barr T4 with a new feed (the
+  burner unchanged: its flame comes from the caches of the combustion code); the flame's share
+  of the time is in the benchmark's ``extra_info`` (``flame_share``).
+- ``test_bench_parse_merged_build_tscheng_A16``: the old way, for comparison: the whole case
+  mapping with the new values parsed (``parse_case``) and built.
 
 Run: ``.venv/bin/python -m pytest benchmarks/test_bench_setup.py --benchmark-enable
 --benchmark-only -q --benchmark-columns=median,iqr,rounds``.
@@ -23,8 +31,9 @@ import sys
 
 import pytest
 
-from rotarykiln.case import parse_case, read_case_yaml
+from rotarykiln.case import case_with, load_case, parse_case, read_case_yaml
 from rotarykiln.cases import builtin_case_path
+from rotarykiln.kiln import from_case
 from rotarykiln.kiln.from_case import kiln_from_case
 
 
@@ -104,3 +113,74 @@ def test_bench_version_and_help_process(benchmark, argv):
 
     done = benchmark.pedantic(run, rounds=9, iterations=1)
     assert done.returncode == 0 and "rotarykiln" in done.stdout
+
+
+def _variants(name: str, changes):
+    """An endless supply of (base case, changes) for the case ``name``: ``changes(i)`` gives
+    the i-th variant's dotted fields (new texts every round, written with a number of digits
+    no other test uses: pint parses each, as it would a study's values)."""
+    base = load_case(builtin_case_path(name))
+    kiln_from_case(base)  # first-call costs outside the timing
+    return base, (changes(i) for i in itertools.count())
+
+
+def test_bench_case_with_build_tscheng_A16(benchmark, no_disk_cache):
+    base, changes = _variants(
+        "tscheng_A16",
+        lambda i: {
+            "operation.speed": f"{1.0 + i * 1.3e-3:.7f} rpm",
+            "gas.flow": f"{20.0 + i * 7.1e-3:.7f} kg/h",
+        },
+    )
+
+    def variant():
+        return kiln_from_case(case_with(base, next(changes)))
+
+    kiln, cells = benchmark.pedantic(variant, rounds=500, iterations=1, warmup_rounds=5)
+    assert cells == 100 and kiln.firing.flame is None
+
+
+def test_bench_case_with_build_barr_T4(benchmark, no_disk_cache, monkeypatch):
+    base, changes = _variants(
+        "barr_T4", lambda i: {"operation.feed": f"{50.0 + i * 0.031:.7f} kg/h"}
+    )
+    import time
+
+    spent = []
+    fire = from_case.fire
+
+    def timed_fire(*args, **kwargs):
+        t0 = time.perf_counter()
+        try:
+            return fire(*args, **kwargs)
+        finally:
+            spent.append(time.perf_counter() - t0)
+
+    monkeypatch.setattr(from_case, "fire", timed_fire)
+    total = []
+
+    def variant():
+        t0 = time.perf_counter()
+        out = kiln_from_case(case_with(base, next(changes)))
+        total.append(time.perf_counter() - t0)
+        return out
+
+    kiln, cells = benchmark.pedantic(variant, rounds=300, iterations=1, warmup_rounds=5)
+    assert kiln.firing.flame is not None
+    benchmark.extra_info["flame_share"] = round(sum(spent[-300:]) / sum(total[-300:]), 3)
+
+
+def test_bench_parse_merged_build_tscheng_A16(benchmark, no_disk_cache):
+    data = read_case_yaml(builtin_case_path("tscheng_A16"))
+    kiln_from_case(parse_case(data))
+    counter = itertools.count()
+
+    def variant():
+        i = next(counter)
+        d = copy.deepcopy(data)
+        d["operation"]["speed"] = f"{1.0 + i * 1.3e-3:.8f} rpm"  # texts of no other test
+        d["gas"]["flow"] = f"{20.0 + i * 7.1e-3:.8f} kg/h"
+        return kiln_from_case(parse_case(d))
+
+    kiln, cells = benchmark.pedantic(variant, rounds=300, iterations=1, warmup_rounds=5)
+    assert cells == 100

@@ -161,6 +161,9 @@ def _cases(tmp_path_factory=None):
         ["--grid", "operation.speed=1 rpm,2 rpm", "--workers", "0"],
         ["--grid", "operation.speed=1 rpm,2 rpm", "--workers", "-2"],
         ["--grid", "operation.speed=1 rpm,2 rpm", "--workers", "abc"],
+        ["--grid", "operation.speed=1 rpm,2 rpm", "--batch", "0"],
+        ["--grid", "operation.speed=1 rpm,2 rpm", "--batch", "-4"],
+        ["--grid", "operation.speed=1 rpm,2 rpm", "--batch", "abc"],
         ["--grid", "operation.speed=1 rpm,2 rpm", "--seed", "-1"],
         ["--grid", "operation.speed=1 rpm,2 rpm", "--name", "../x"],
         # issue 21: one cap for every design, before it is built; a path given twice
@@ -192,6 +195,7 @@ def _cases(tmp_path_factory=None):
         param + out + ["--method", "morris", "--levels", "1"],
         param + out + ["--method", "morris", "--levels", "-1"],
         param + out + ["--workers", "0"],
+        param + out + ["--batch", "0"],
         ["--param", "operation.speed=uniform(2 rpm, 1 rpm)", *out],
         ["--param", "operation.speed=normal(1 rpm, -1 rpm)", *out],
         ["--param", "no.such=uniform(1, 2)", *out],

@@ -29,13 +29,28 @@ fields of :class:`Case`.
 
 from __future__ import annotations
 
+import copy
 import difflib
+import inspect
 import math
 import re
+import threading
+import types
+import typing
+from collections.abc import Mapping
+from functools import lru_cache
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    TypeAdapter,
+    ValidationError,
+    model_validator,
+)
 from pydantic_core import PydanticCustomError
 
 from rotarykiln.errors import InputError
@@ -92,6 +107,7 @@ __all__ = [
     "TransportWeir",
     "Velocity",
     "VolumetricFlow",
+    "case_with",
     "change_fields",
     "case_file_path",
     "check_quantity",
@@ -746,7 +762,7 @@ def _reaction_names(v: Any, info) -> list:
             "number", "{value} is not a list of reaction names or reactions", {"value": v}
         )
     species = _user_species(info)
-    known = builtin_reactions(species)
+    known = _builtin_reaction_names() if species is None else builtin_reactions(species)
     seen = set()
     for i, item in enumerate(v):
         if isinstance(item, dict):
@@ -766,6 +782,15 @@ def _reaction_names(v: Any, info) -> list:
             raise PydanticCustomError("number", "{name} is listed twice", {"name": _show(name)})
         seen.add(name)
     return v
+
+
+@lru_cache(maxsize=1)
+def _builtin_reaction_names() -> frozenset[str]:
+    """The names of the built-in reactions on the built-in species (read once: their files
+    are part of the package)."""
+    from rotarykiln.chemistry.reaction import builtin_reactions
+
+    return frozenset(builtin_reactions())
 
 
 class Gas(Section):
@@ -1058,9 +1083,10 @@ class Case(Section):
     def replace(self, changes: Any = None, /, **sections: Any) -> Case:
         """A new case with some fields changed, validated as a case file (a case is frozen).
 
-        The case is written back with units (:func:`rotarykiln.case_io.dump_case`), changed
-        (:func:`change_fields`) and parsed again (:func:`parse_case`): a bad value raises the
-        one-line :class:`~rotarykiln.errors.InputError` of a case file, naming the field.
+        The case equals the one :func:`parse_case` makes of the case file with the fields
+        changed (:func:`change_fields`), and is made as :func:`case_with` makes it: only the
+        changed fields are validated; a bad value raises the one-line
+        :class:`~rotarykiln.errors.InputError` of a case file, naming the field.
 
         Parameters
         ----------
@@ -1089,10 +1115,7 @@ class Case(Section):
         ...
         rotarykiln.errors.InputError: operation.speed: "3 m" is ...
         """
-        from rotarykiln.case_io import dump_case
-
-        data = change_fields(dump_case(self), {**sections, **dict(changes or {})}, type(self))
-        return parse_case(data, source="case", model=type(self))
+        return case_with(self, {**sections, **dict(changes or {})})
 
     def model_copy(self, *, update: Any = None, deep: bool = False) -> Case:
         """A copy; with ``update`` (dotted fields or sections -> values), :meth:`replace`,
@@ -1224,6 +1247,331 @@ def _change_field(data: dict, path: Any, value: Any, model: type[BaseModel]) -> 
                 shown, message=f"{shown}: {_show(child)} is a value, not a section of fields"
             )
         node = child
+
+
+def case_with(base: Case, changes: Mapping[str, object]) -> Case:
+    """The case ``base`` with the dotted fields of ``changes`` replaced, validated as a case file.
+
+    The result equals ``parse_case(change_fields(data, changes))``, ``data`` being the case
+    file ``base`` was read from: the same values (SI floats), the same fields given, the same
+    rules, limits and messages. Only the changed fields are validated, with the checks of the
+    sections that hold them (a burner's air against its fuel, a bed's fill or residence time,
+    a lining layer's thickness ...); the rest of ``base`` is taken as it is. A change that the
+    fast path cannot decide alone (a bad value, a list item removed, an index into a list of
+    numbers, the case's own species, a path inside a value given by another change) is made
+    the slow way: the case written back with units, changed and parsed again, which gives the
+    same case or the same error. Built for studies, where a sweep, a Sobol design or a
+    calibration solves thousands of variants of one base case: a variant costs ~0.02 ms here,
+    plus ~0.1 ms for pint to read each text it has not read before (a parse of the whole case
+    takes ~0.3 ms with its texts read before, ~4 ms without; the slow way ~5 ms).
+
+    Parameters
+    ----------
+    base : Case
+        A validated case (:func:`load_case`, :func:`parse_case`).
+    changes : mapping
+        Dotted field -> value, as a case file gives them: ``{"operation.speed": "1.5 rpm",
+        "gas.flow": "24.6 kg/h", "burner.primary_air.flow": "17 L/s", "bed.fill": [0.1, 0.2],
+        "wall.lining[0].thickness": "80 mm"}`` (``wall.lining.0.thickness`` also names the
+        first layer); text with units, or numbers in SI where a case file accepts them (a
+        rotation rate or a flow needs its unit, 0 excepted); a mapping or a section model for
+        a whole section; None removes the field (its default applies). Applied in order.
+
+    Returns
+    -------
+    Case
+        A new case (``base`` itself when ``changes`` is empty); the sections not changed are
+        those of ``base`` (a case is frozen).
+
+    Raises
+    ------
+    InputError
+        As :func:`parse_case` of the changed case file: one line naming the field, the value
+        and what is accepted; or, for a name that is no field, as :func:`change_fields`.
+
+    Examples
+    --------
+    >>> from rotarykiln.cases import builtin_case_path
+    >>> base = load_case(builtin_case_path("tscheng_A16"))
+    >>> case = case_with(base, {"operation.speed": "3 rpm", "gas.flow": "30 kg/h"})
+    >>> round(case.operation.speed, 5), round(case.gas.flow * 3600, 6)  # rad/s, kg/h
+    (0.31416, 30.0)
+    >>> case.wall is base.wall  # unchanged sections are shared
+    True
+    >>> case_with(base, {"operation.speed": "3 m"})
+    Traceback (most recent call last):
+    ...
+    rotarykiln.errors.InputError: operation.speed: "3 m" is a length, expected a rotation rate (rpm, rad/s)
+    """
+    if not isinstance(base, BaseModel):
+        raise TypeError(f"case_with: base is a {type(base).__name__}, not a validated case")
+    if not isinstance(changes, Mapping):
+        raise TypeError(f"case_with: changes is a {type(changes).__name__}, not a mapping")
+    if not changes:
+        return base
+    try:
+        return _case_with_fast(base, changes)
+    except _SlowPath:
+        from rotarykiln.case_io import dump_case
+
+        data = change_fields(dump_case(base), changes, type(base))
+        return parse_case(data, source="case", model=type(base))
+
+
+class _SlowPath(Exception):
+    """:func:`case_with` cannot decide a change alone: the whole case is parsed."""
+
+
+class _Given:
+    """A value a change gives to a field (a leaf of :func:`_change_tree`)."""
+
+    __slots__ = ("value",)
+
+    def __init__(self, value: Any):
+        self.value = value
+
+
+def _change_tree(changes: Mapping) -> dict:
+    """The changes as a tree: field name (or list index) -> subtree, or :class:`_Given` for a
+    field given a value (:class:`_SlowPath` for a change inside a value given before, or one
+    that replaces fields changed before: made one after the other, as in a file)."""
+    tree: dict = {}
+    for path, value in changes.items():
+        if not isinstance(path, str) or not _DOTTED.match(path):
+            raise _SlowPath
+        parts = [
+            int(index or name) if (index or name).isdigit() else name
+            for index, name in re.findall(r"\[(\d+)\]|([^.\[\]]+)", path)
+        ]
+        node = tree
+        for part in parts[:-1]:
+            child = node.get(part)
+            if child is None:
+                child = node[part] = {}
+            elif isinstance(child, _Given):  # inside a value another change gave: as a file
+                raise _SlowPath
+            node = child
+        if isinstance(node.get(parts[-1]), dict):  # replaces fields changed before: as a file
+            raise _SlowPath  # (those changes are still checked, and may be refused)
+        if isinstance(value, BaseModel):  # a section model: written back with units
+            from rotarykiln.case_io import dump_case
+
+            value = dump_case(value)
+        node[parts[-1]] = _Given(value)
+    return tree
+
+
+def _as_data(tree: dict) -> dict:
+    """A subtree of changes as the case-file mapping it makes in an absent section."""
+    out = {}
+    for part, node in tree.items():
+        if not isinstance(part, str):  # an index into a list the case does not give
+            raise _SlowPath
+        if isinstance(node, _Given):
+            if node.value is not None:
+                out[part] = node.value
+        else:
+            out[part] = _as_data(node)
+    return out
+
+
+def _count_values(node: Any) -> int:
+    """Values of a case (or a part of one) as :func:`check_structure` counts them."""
+    if isinstance(node, BaseModel):
+        return 1 + sum(_count_values(getattr(node, k)) for k in node.model_fields_set)
+    if isinstance(node, _Given):
+        return _count_values(node.value)
+    if isinstance(node, dict):
+        return 1 + sum(_count_values(v) for v in node.values())
+    if isinstance(node, list | tuple):
+        return 1 + sum(_count_values(v) for v in node)
+    return 1
+
+
+class _BaseFacts:
+    """What :func:`case_with` needs of a base case beyond its fields: its number of values
+    (the limit of :func:`check_structure`) and its own species table (the validation context
+    of compositions and reactions), worked out once per base."""
+
+    __slots__ = ("base", "count", "species")
+
+    def __init__(self, base: BaseModel):
+        self.base = base  # kept alive: its id stays its own
+        self.count = _count_values(base)
+        self.species = None
+        chem = getattr(base, "chemistry", None)
+        if chem is not None and getattr(chem, "species", None) is not None:
+            from rotarykiln.chemistry.species import load_species
+
+            self.species = load_species(chem.species)
+
+
+_BASES: dict[int, _BaseFacts] = {}  # id of the base -> its facts, the last few bases
+_BASES_LOCK = threading.Lock()
+
+
+def _base_facts(base: BaseModel) -> _BaseFacts:
+    """The :class:`_BaseFacts` of ``base``, kept for the last 8 bases (a study's base is
+    worked out once)."""
+    with _BASES_LOCK:
+        hit = _BASES.get(id(base))
+    if hit is not None and hit.base is base:
+        return hit
+    facts = _BaseFacts(base)
+    with _BASES_LOCK:
+        if len(_BASES) >= 8:
+            _BASES.pop(next(iter(_BASES)))
+        _BASES[id(base)] = facts
+    return facts
+
+
+def _check_changes_structure(facts: _BaseFacts, tree: dict) -> None:
+    """The limits :func:`parse_case` puts on the whole case (:func:`check_structure`), on the
+    changes: their depth and integers exactly, their count with the base's (values of the base
+    that a change replaces are counted too, with a wide margin for values the validation
+    merged, such as a composition mapping made one text)."""
+
+    def data(node):
+        if isinstance(node, _Given):
+            return node.value
+        return {str(k): data(v) for k, v in node.items()}
+
+    try:
+        _check_structure(data(tree), "case")
+    except InputError:
+        raise _SlowPath from None
+    if _count_values(tree) + facts.count > MAX_YAML_VALUES // 2:
+        raise _SlowPath
+
+
+def _case_with_fast(base: BaseModel, changes: Mapping) -> BaseModel:
+    tree = _change_tree(changes)
+    chem = tree.get("chemistry")
+    if isinstance(chem, _Given) or (isinstance(chem, dict) and "species" in chem):
+        raise _SlowPath  # the species every composition and reaction is checked against
+    facts = _base_facts(base)
+    _check_changes_structure(facts, tree)
+    return _patched(base, tree, {"species": facts.species})
+
+
+def _patched(section: BaseModel, tree: dict, context: dict) -> BaseModel:
+    """A copy of ``section`` with the changes of ``tree`` validated, then the section's own
+    checks (its ``after`` model validators) run on it; :class:`_SlowPath` when in doubt."""
+    cls = type(section)
+    checks = _section_checks(cls)
+    if checks is None:
+        raise _SlowPath
+    new = copy.copy(section)  # its own __dict__ and set of fields given
+    values, given = new.__dict__, new.__pydantic_fields_set__
+    for name, node in tree.items():
+        info = cls.model_fields.get(name) if isinstance(name, str) else None
+        if info is None:
+            raise _SlowPath  # no such field: change_fields names it
+        if isinstance(node, _Given):
+            if node.value is None:  # removed: the default applies
+                if info.is_required():
+                    raise _SlowPath
+                values[name] = info.get_default(call_default_factory=True)
+                given.discard(name)
+                continue
+            values[name] = _validated(cls, name, node.value, context)
+            given.add(name)
+            continue
+        current = values[name]
+        if name not in given or current is None:  # a section the case does not give
+            values[name] = _validated(cls, name, _as_data(node), context)
+            given.add(name)
+        elif isinstance(current, BaseModel):
+            values[name] = _patched(current, node, context)
+        elif isinstance(current, list) and _is_list_of_sections(cls, name):
+            items = list(current)
+            for index, sub in node.items():
+                if not (isinstance(index, int) and 0 <= index < len(items)):
+                    raise _SlowPath
+                if isinstance(sub, _Given):
+                    if sub.value is None:  # an item removed
+                        raise _SlowPath
+                    items[index] = sub.value  # validated with the list below
+                elif isinstance(items[index], BaseModel):
+                    items[index] = _patched(items[index], sub, context)
+                else:
+                    raise _SlowPath
+            values[name] = _validated(cls, name, items, context)
+        else:
+            raise _SlowPath  # inside a value (a number, a list of numbers, a mapping)
+    for check in checks:
+        try:
+            result = check(new)
+        except Exception:  # refused: the parse of the whole case says how
+            raise _SlowPath from None
+        if result is not new:
+            raise _SlowPath
+    return new
+
+
+@lru_cache(maxsize=256)
+def _section_checks(cls: type[BaseModel]) -> tuple | None:
+    """The ``after`` model validators of a section class (functions of the instance), or None
+    when the class has checks :func:`case_with` cannot run on a changed copy (``before`` or
+    ``wrap`` validators, validators of the whole field set, ``model_post_init``)."""
+    decorators = cls.__pydantic_decorators__
+    if cls.__pydantic_post_init__ is not None:
+        return None
+    checks = []
+    for dec in decorators.model_validators.values():
+        func = dec.func
+        if dec.info.mode != "after" or not inspect.isfunction(func):
+            return None
+        if len(inspect.signature(func).parameters) != 1:  # (self, info): not run here
+            return None
+        checks.append(func)
+    return tuple(checks)
+
+
+@lru_cache(maxsize=1024)
+def _field_adapter(cls: type[BaseModel], name: str) -> TypeAdapter | None:
+    """A validator of the field ``name`` of ``cls`` alone: its annotation with its metadata
+    (units, bounds, library names), as the model validates it; None when the class has field
+    validators of its own."""
+    decorators = cls.__pydantic_decorators__
+    for dec in decorators.field_validators.values():
+        if name in dec.info.fields or "*" in dec.info.fields:
+            return None
+    info = cls.model_fields[name]
+    annotation = info.annotation
+    if info.metadata:
+        annotation = Annotated[(annotation, *info.metadata)]
+    return TypeAdapter(annotation)
+
+
+def _validated(cls: type[BaseModel], name: str, value: Any, context: dict) -> Any:
+    """``value`` validated as the field ``name`` of ``cls``; :class:`_SlowPath` if refused."""
+    adapter = _field_adapter(cls, name)
+    if adapter is None:
+        raise _SlowPath
+    try:
+        return adapter.validate_python(value, context=context)
+    except ValidationError:
+        raise _SlowPath from None
+
+
+@lru_cache(maxsize=256)
+def _is_list_of_sections(cls: type[BaseModel], name: str) -> bool:
+    """Whether the field is a plain list of section models (``list[X]`` or ``list[X] | None``),
+    whose items a change may index."""
+    info = cls.model_fields[name]
+    if info.metadata:
+        return False
+    annotation = info.annotation
+    if typing.get_origin(annotation) in (typing.Union, types.UnionType):
+        arms = [a for a in typing.get_args(annotation) if a is not type(None)]
+        if len(arms) != 1:
+            return False
+        annotation = arms[0]
+    if typing.get_origin(annotation) is not list:
+        return False
+    (item,) = typing.get_args(annotation)
+    return isinstance(item, type) and issubclass(item, BaseModel)
 
 
 # What a built-in pydantic check accepts, in the words of "<field>: <value> is not <accepted>".

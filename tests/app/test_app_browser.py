@@ -43,6 +43,34 @@ def _wait(driver, condition, timeout=WAIT):
     return WebDriverWait(driver, timeout, poll_frequency=0.1).until(condition)
 
 
+def _click(driver, find) -> None:
+    """Click the element ``find(driver)`` returns once it is there and takes the click: an
+    overlay still settling (the case list's search box, a closing dropdown) can intercept a
+    click, which is then tried again until WAIT runs out."""
+    from selenium.common.exceptions import (
+        ElementClickInterceptedException,
+        NoSuchElementException,
+        StaleElementReferenceException,
+    )
+
+    def attempt(d) -> bool:
+        try:
+            element = find(d)
+            if element is None:
+                return False
+            d.execute_script("arguments[0].scrollIntoView({block: 'center'})", element)
+            element.click()
+        except (
+            ElementClickInterceptedException,
+            NoSuchElementException,
+            StaleElementReferenceException,
+        ):
+            return False
+        return True
+
+    _wait(driver, attempt)
+
+
 def _field(driver, path: str):
     return _wait(
         driver,
@@ -72,7 +100,7 @@ def _status(driver) -> str:
 def _run(driver, expect_ok: bool = True) -> str:
     """Press Run and wait for its status line; return it."""
     before = _status(driver)
-    _by(driver, "#run-button").click()
+    _click(driver, lambda d: _by(d, "#run-button"))
     _wait(driver, lambda d: _status(d) and _status(d) != before)
     status = _status(driver)
     if expect_ok:
@@ -132,7 +160,7 @@ def test_displayed_outlet_temperature_is_the_solvers(browser, app_server, screen
         assert f"{expected:.6g}"[:5] in response.read().decode()
 
     # Save case: the edited case as a YAML file, with units, that loads to the same case
-    _by(browser, "#save-button").click()
+    _click(browser, lambda d: _by(d, "#save-button"))
     saved = downloads / f"{CASE}.yaml"
     _wait(browser, lambda d: saved.is_file() and saved.stat().st_size > 0)
     assert parse_case(yaml.safe_load(saved.read_text(encoding="utf-8"))) == parse_case(raw)
@@ -158,7 +186,7 @@ def test_bad_input_is_shown_next_to_its_field_and_results_stay(
     assert "operation.speed: 3 has no unit" in _field_error(browser, "operation.speed")
     assert _by(browser, "#outlet-temperature").text == outlet  # nothing computed is lost
     before = _status(browser)
-    _by(browser, "#save-button").click()  # nor saved
+    _click(browser, lambda d: _by(d, "#save-button"))  # nor saved
     _wait(browser, lambda d: _status(d) != before)
     assert _status(browser).startswith("Save 1 not done"), _status(browser)
     _type(browser, "operation.speed", "1.5 rpm")
@@ -219,16 +247,15 @@ def _builtin(name: str) -> dict:
 
 def _pick(driver, name: str) -> None:
     """Choose a built-in case in the case list (searched by its name) and wait for it."""
-    _by(driver, "#case-picker").click()
+    _click(driver, lambda d: _by(d, "#case-picker"))
     _wait(driver, lambda d: d.find_element("css selector", ".dash-dropdown-search")).send_keys(name)
-    option = _wait(
+    _click(
         driver,
         lambda d: next(
             (o for o in d.find_elements("css selector", "[role=option]") if o.text == name),
             None,
         ),
     )
-    option.click()
     _wait(driver, lambda d: _by(d, "#case-info").text == f"Loaded: {name} (built-in)")
 
 

@@ -84,8 +84,9 @@ class RateContext:
         """Mass of bed species ``name`` per kiln length, kg/m (all bed species move together)."""
         return self.flow(name) * self._holdup_per_flow
 
-    def flow_in(self, name: str, law: str) -> float:
-        """Inlet bed mass flow of ``name``, kg/s: the reference of conversions."""
+    def flow_in(self, name: str, law: str):
+        """Inlet bed mass flow of ``name``, kg/s: the reference of conversions (one value, or
+        one per cell when the cells belong to several kilns of a batch)."""
         ref = self.state.bed_mass_flow_in
         if name not in ref:
             raise InputError(
@@ -212,10 +213,10 @@ def register_rate_law(
 
 def _conversion_ratio(ctx: RateContext, basis: str, law: str) -> np.ndarray:
     """1 - x = Q/Q_in, clipped to [0, 1]."""
-    q_in = ctx.flow_in(basis, law)
-    if q_in <= 0:
-        return np.zeros(ctx.n)
-    return np.clip(ctx.flow(basis) / q_in, 0.0, 1.0)
+    q_in = np.asarray(ctx.flow_in(basis, law))  # one value, or one per cell (a batch)
+    fed = q_in > 0
+    ratio = ctx.flow(basis) / np.where(fed, q_in, 1.0)
+    return np.where(fed, np.clip(ratio, 0.0, 1.0), 0.0) * np.ones(ctx.n)
 
 
 @register_rate_law(
@@ -398,8 +399,8 @@ def _wen_yen(ctx, basis, p):
     if step in (1, 2):
         return k * ctx.holdup(basis)
     # steps 3-5: k x1 x2 with x2 = bitumen / initial kerogen; in hold-up: k m'_K x2
-    q_in = ctx.flow_in("kerogen", "wen_yen")
-    x2 = ctx.flow("bitumen") / q_in if q_in > 0 else np.zeros(ctx.n)
+    q_in = np.asarray(ctx.flow_in("kerogen", "wen_yen"))  # one value, or one per cell
+    x2 = np.where(q_in > 0, ctx.flow("bitumen") / np.where(q_in > 0, q_in, 1.0), 0.0)
     return k * ctx.holdup("kerogen") * x2
 
 

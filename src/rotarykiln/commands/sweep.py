@@ -121,6 +121,14 @@ def add_study_options(p, params: bool = True) -> None:
     p.add_argument("--executor", choices=EXECUTORS, default="process")
     p.add_argument("--workers", type=int, default=None, help="processes (default: all CPUs)")
     p.add_argument(
+        "--batch",
+        type=int,
+        default=None,
+        metavar="N",
+        help="kiln models: at most N cases solved together on a worker (default: the cases "
+        "over two batches per worker, at most 256, fewer if memory is short); 1: one at a time",
+    )
+    p.add_argument(
         "--scheduler",
         default=None,
         help="with --executor dask: a scheduler address tcp://host:port (default: LocalCluster)",
@@ -157,6 +165,7 @@ def check_study_options(args) -> None:
     """The shared options in their ranges (one line naming the option otherwise)."""
     check_printable(args, ("case", "data"))
     check_count("--workers", getattr(args, "workers", None), 1, 1024)
+    check_count("--batch", getattr(args, "batch", None), 1, 100_000)
     check_count("--seed", getattr(args, "seed", None), 0, 2**32 - 1)
 
 
@@ -198,6 +207,7 @@ def runner_options(args, folder) -> dict:
         "dask_scheduler": args.scheduler,
         "store": store,
         "progress": args.progress,
+        "batch": getattr(args, "batch", None),
     }
 
 

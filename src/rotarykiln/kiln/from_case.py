@@ -18,12 +18,22 @@ model as follows:
 - ``wall`` (lining layers, a constant U or a heating jacket; heater zones), ``closures``,
   ``measurements``,
   ``solver`` (cells), ``chemistry`` (reactions).
+
+Studies build thousands of kilns from variants of one case that differ in a few operating
+fields (:func:`rotarykiln.case.case_with`): the parts built from sections that do not change
+(the lining layers and their materials, the library solid, the closures, the reaction
+mechanism, the inlet gas's mass shares) are kept in small bounded caches keyed on the
+section's content (the ``repr`` of its values, every float exactly), so a variant's kiln
+costs a fraction of a millisecond. The objects kept are frozen dataclasses (their arrays
+read-only), shared by the kilns built from equal sections; a kiln built from the cache
+equals, bit for bit, one built afresh.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
+from functools import lru_cache
 
 import numpy as np
 
@@ -125,15 +135,71 @@ def closures_from_case(section) -> Closures:
     >>> closures_from_case(ClosuresSection(preset="seed004", radiation=False)).gas_wall
     'gorog1982'
     """
+    key = _content_key(section)
+    if key is None:
+        return _closures(section)
+    return _cached_closures(_ByContent(key, section))
+
+
+def _closures(section) -> Closures:
     base = SEED004_CLOSURES if section.preset == "seed004" else Closures()
     given = {f.name: getattr(section, f.name) for f in dataclasses.fields(Closures)}
     return dataclasses.replace(base, **{k: v for k, v in given.items() if v is not None})
 
 
+@lru_cache(maxsize=32)
+def _cached_closures(section: _ByContent) -> Closures:
+    return _closures(section.value)
+
+
+class _ByContent:
+    """A section (or any input) passed through an ``lru_cache`` by its content ``key`` alone:
+    equal keys are the same entry, whatever object carries them."""
+
+    __slots__ = ("key", "value")
+
+    def __init__(self, key, value):
+        self.key = key
+        self.value = value
+
+    def __hash__(self) -> int:
+        return hash(self.key)
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, _ByContent) and self.key == other.key
+
+
+def _content_key(section, fields: tuple[str, ...] | None = None) -> str | None:
+    """The content of a case-file section (or of its ``fields``) as a cache key: the ``repr``
+    of its values (every field; floats written exactly, -0.0 apart from 0.0, NaN apart from
+    None, 1 apart from 1.0 and True, text quoted), or None for what is not a section (then
+    built afresh)."""
+    from pydantic import BaseModel
+
+    if not isinstance(section, BaseModel):
+        return None
+    if fields is None:
+        return f"{type(section).__qualname__}:{section!r}"
+    return f"{type(section).__qualname__}:{tuple(getattr(section, f) for f in fields)!r}"
+
+
+def _exact(value) -> tuple:
+    """A value as a cache key that tells 1 from 1.0 and from True, and 0.0 from -0.0."""
+    return (type(value), repr(value))
+
+
+def _read_only(obj):
+    """``obj`` with the numpy arrays among its attributes made read-only (a shared object of
+    the caches: a solver writing into one raises instead of changing the next kiln)."""
+    for value in getattr(obj, "__dict__", {}).values():
+        if isinstance(value, np.ndarray):
+            value.setflags(write=False)
+    return obj
+
+
 def _inert_kiln(case, gas: dict) -> Kiln:
     """A bed of a library solid that does not react (:meth:`Kiln.inert`)."""
     from rotarykiln.commands.model_runs import bed_fill_profile
-    from rotarykiln.materials.solids import load_solid
 
     m = case.material
     name = m.solid or _library_name(m.name)
@@ -152,7 +218,7 @@ def _inert_kiln(case, gas: dict) -> Kiln:
         overrides["emissivity"] = m.emissivity
     if m.thermal_conductivity is not None:
         overrides["bed_conductivity"] = m.thermal_conductivity
-    solid = load_solid(name, **overrides)
+    solid = _solid(name, **overrides)
     bed = case.bed
     if case.transport is not None:
         fill = bed_fill_profile(case)
@@ -334,6 +400,30 @@ def _luminous_zone(section, flame, length: float, counter_current: bool):
 def _mass_flows(composition, flow: float) -> dict[str, float]:
     """Species mass flows (kg/s) of ``flow`` kg/s of a gas of mole fractions ``composition``
     (text or pairs); species outside the chemistry table are counted as N2, by mass."""
+    if type(composition) is str:
+        key = composition
+    elif isinstance(composition, tuple | list) and all(
+        isinstance(p, tuple) and len(p) == 2 and type(p[0]) is str and type(p[1]) is float
+        for p in composition
+    ):  # (species, mole fraction) pairs, a flame's products
+        key = tuple((n, repr(x)) for n, x in composition)
+    else:
+        key = None
+    if key is None:
+        mass, total = _shares(composition)
+    else:
+        mass, total = _mass_shares(_ByContent(key, composition))
+    return {k: flow * v / total for k, v in mass}
+
+
+@lru_cache(maxsize=64)
+def _mass_shares(composition: _ByContent) -> tuple[tuple[tuple[str, float], ...], float]:
+    return _shares(composition.value)
+
+
+def _shares(composition) -> tuple[tuple[tuple[str, float], ...], float]:
+    """Species -> x M (kg/mol, species outside the chemistry table counted as N2) of a gas of
+    mole fractions ``composition`` (text or pairs), and their sum."""
     from rotarykiln.chemistry.species import default_species
     from rotarykiln.materials.gas import molar_mass, parse_composition
 
@@ -344,7 +434,7 @@ def _mass_flows(composition, flow: float) -> dict[str, float]:
         key = name if name in known else "N2"
         mass[key] = mass.get(key, 0.0) + x * molar_mass(f"{name}:1")
     total = sum(mass.values())
-    return {k: flow * v / total for k, v in mass.items()}
+    return tuple(mass.items()), total
 
 
 def _mole_text(mass_fractions: dict[str, float]) -> str:
@@ -445,6 +535,21 @@ def mechanism_from_case(chem):
     """The :class:`~rotarykiln.chemistry.Mechanism` of a ``chemistry`` section (built-in
     names or user mappings, on the built-in species and the section's own ``species``);
     reactions with a sharp onset temperature (``width`` 0) get ``chemistry.onset_width``."""
+    key = _content_key(chem, ("species", "reactions", "onset_width", "kirchhoff"))
+    if key is None:
+        return _mechanism(chem)
+    return _cached_mechanism(_ByContent(key, chem))
+
+
+@lru_cache(maxsize=16)
+def _cached_mechanism(chem: _ByContent):
+    mech = _read_only(_mechanism(chem.value))
+    for r in mech.reactions:
+        _read_only(r)
+    return mech
+
+
+def _mechanism(chem):
     from rotarykiln.chemistry.mechanism import Mechanism
     from rotarykiln.chemistry.reaction import builtin_reactions, reaction_from_dict
     from rotarykiln.chemistry.species import default_species, load_species
@@ -471,10 +576,28 @@ def _library_name(name: str | None) -> str | None:
 
 
 def _library_solid(name: str | None):
+    name = _library_name(name)
+    return _solid(name) if name is not None else None
+
+
+def _solid(name: str, **overrides):
+    """:func:`~rotarykiln.materials.solids.load_solid` of the library solid ``name`` with its
+    overrides, kept for the last few (name, overrides) built (a frozen
+    :class:`~rotarykiln.materials.solids.Solid`)."""
     from rotarykiln.materials.solids import load_solid
 
-    name = _library_name(name)
-    return load_solid(name) if name is not None else None
+    if not all(isinstance(v, float | int | str | bool | None) for v in overrides.values()):
+        return load_solid(name, **overrides)
+    key = (name, tuple((k, *_exact(v)) for k, v in sorted(overrides.items())))
+    return _cached_solid(_ByContent(key, (name, overrides)))
+
+
+@lru_cache(maxsize=32)
+def _cached_solid(given: _ByContent):
+    from rotarykiln.materials.solids import load_solid
+
+    name, overrides = given.value
+    return load_solid(name, **overrides)
 
 
 def _bed_dispersion(case, kiln: Kiln) -> float:
@@ -564,6 +687,18 @@ def layers_from_case(lining, section: str = "wall") -> tuple[Layer, ...]:
     >>> layer.material.name, layer.thickness
     ('fireclay_brick', 0.1)
     """
+    keys = [_content_key(spec) for spec in lining or ()]
+    if keys and None not in keys:
+        return _cached_layers(_ByContent((section, *keys), (tuple(lining), section)))
+    return _layers(lining, section)
+
+
+@lru_cache(maxsize=32)
+def _cached_layers(lining: _ByContent) -> tuple[Layer, ...]:
+    return _layers(*lining.value)
+
+
+def _layers(lining, section: str) -> tuple[Layer, ...]:
     from rotarykiln.materials.lining import LiningMaterial, load_lining_material
 
     def material(spec):

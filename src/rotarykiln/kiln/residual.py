@@ -314,7 +314,7 @@ class KilnResidual:
         changes = {}
         if geo is not self.grid:
             changes["geometry"] = geo
-        if omega is not None and omega != self.exchange.omega:
+        if omega is not None and (np.ndim(omega) > 0 or omega != self.exchange.omega):
             changes["omega"] = omega
         return dataclasses.replace(self.exchange, **changes) if changes else self.exchange
 
@@ -356,16 +356,25 @@ class KilnResidual:
             q = np.maximum(qb_out, 0.0)
             eps = RATE_FLOOR * self.bed_scale
             qb_out = np.where(self.regularised, q * q / (q + eps), q)
-        if inputs is None or inputs is self.inputs:
-            flow_in = self.flow_in
-        else:
-            flow_in = {s: float(q) for s, q in zip(self.bed_names, inputs.feed, strict=True)}
         shape = tb.shape
         flat = int(np.prod(shape))
+        if inputs is None or inputs is self.inputs:
+            flow_in = self.flow_in
+        elif np.ndim(inputs.feed) > 1:  # a batch of kilns: each cell its kiln's feed
+            feed = inputs.feed
+            flow_in = {
+                s: np.broadcast_to(feed[..., i], shape).reshape(flat)
+                for i, s in enumerate(self.bed_names)
+            }
+        else:
+            flow_in = {s: float(q) for s, q in zip(self.bed_names, inputs.feed, strict=True)}
         qb = np.maximum(qb_out, 0.0).reshape(flat, -1)
         bed = {s: qb[:, i] for i, s in enumerate(self.bed_names)}
         if self.depth is None:
-            holdup = qb.sum(-1) / k.bed.velocity
+            velocity = k.bed.velocity
+            if inputs is not None and inputs.bed_velocity is not None:
+                velocity = np.broadcast_to(inputs.bed_velocity, shape).reshape(flat)
+            holdup = qb.sum(-1) / velocity
         else:
             rho = self.bed_density(qb_out)
             holdup = (rho * np.broadcast_to(geo.bed_area, shape)).reshape(flat)
@@ -475,8 +484,9 @@ class KilnResidual:
         if self.kiln.bed.dispersion > 0:
             rho = self.bed_density(0.5 * (qb[..., 1:, :] + qb[..., :-1, :]))
             holdup = rho * np.broadcast_to(geo.bed_area, tb.shape)
+            disp = self.kiln.bed.dispersion if u.dispersion is None else u.dispersion
             disp_energy, disp_species = dispersion_sources(
-                self.kiln.bed.dispersion, holdup, qb, hb_nodes, dz, self.disperses
+                disp, holdup, qb, hb_nodes, dz, self.disperses
             )
             r_bed = r_bed - disp_energy
         sign = 1.0 if self.kiln.gas.counter_current else -1.0  # downstream minus upstream
@@ -523,6 +533,8 @@ class KilnResidual:
         """Heat released in the gas per metre of each cell (W/m): the kiln's release profile
         at the heat release of ``inputs``, times the continuation's ``scales.release``."""
         u = inputs or self.inputs
+        if u.release_cells is not None:
+            return scales.release * u.release_cells
         q0 = self.kiln.firing.heat_release
         factor = scales.release * (u.heat_release / q0 if q0 > 0 else 0.0)
         return factor * self.grid.heat_release

@@ -25,10 +25,20 @@ full before use). Tables, burnt gases and the species list are kept in memory pe
 on disk (:mod:`rotarykiln.materials._cache`, keyed on everything they depend on), so a run
 whose tables were computed before needs neither Cantera nor scipy's splines: the numbers read
 back are the ones computed, to the last bit.
+
+A new composition (the products of a new fuel flow in a sweep) costs little more than its
+thermochemistry: the specific heat is sampled on a thermo-only Cantera phase of the
+composition's species alone (:func:`_thermo_phase`, built once per species set and thread:
+absent species add exact zeros to Cantera's sums, so the numbers are the full mechanism's to
+the last bit), and the transport fits, which need GRI-Mech 3.0's mixture-averaged model (the
+Wilke viscosity is most of a table's cost) and which a burner's products seldom need, are
+computed on first use (:attr:`GasPropertyTable._k`, :attr:`GasPropertyTable._mu`), exactly as
+before, and kept with the table and on disk.
 """
 
 from __future__ import annotations
 
+import bisect
 import difflib
 import hashlib
 import math
@@ -89,10 +99,48 @@ def gri30():
     return gas
 
 
+#: At most this many thermo-only phases (:func:`_thermo_phase`) are kept per thread.
+THERMO_PHASES = 32
+
+
+def _thermo_phase(species: tuple[str, ...], gas=None):
+    """A thermo-only Cantera phase (ideal gas, no kinetics, no transport) of ``species``.
+
+    ``species``: GRI-Mech 3.0 names in the mechanism's order; ``gas``: the GRI-Mech 3.0
+    solution the species are taken from (default :func:`gri30`, and then the phase is kept for
+    this thread, up to :data:`THERMO_PHASES` of them, the oldest dropped). Its state is always
+    set in full (``TPX``) before use. Building one costs ~0.1 ms against ~0.05 s for the
+    mechanism; sampling it costs a fraction of the mechanism's 53 species: its mixture
+    properties are the mechanism's to the last bit, since the species left out hold exact zero
+    mole fractions there (zero terms in Cantera's sums, in the same order).
+    """
+    import cantera as ct
+
+    if gas is not None:
+        return ct.Solution(thermo="ideal-gas", species=[gas.species(s) for s in species])
+    phases = getattr(_thread, "thermo_phases", None)
+    if phases is None:
+        phases = _thread.thermo_phases = {}
+    phase = phases.get(species)
+    if phase is None:
+        full = gri30()
+        phase = ct.Solution(thermo="ideal-gas", species=[full.species(s) for s in species])
+        if len(phases) >= THERMO_PHASES:
+            del phases[next(iter(phases))]
+        phases[species] = phase
+    return phase
+
+
+@lru_cache(maxsize=1)
+def _grid_digest() -> str:
+    """SHA-256 of :data:`T_GRID`'s bytes (for the disk-cache keys)."""
+    return hashlib.sha256(T_GRID.tobytes()).hexdigest()
+
+
 def _cache_key(kind: str, *inputs) -> str:
     """Disk-cache key of a result of this module: its inputs (exact reprs), the temperature
     grid and the environment (:func:`rotarykiln.materials._cache.environment_key`)."""
-    grid = hashlib.sha256(T_GRID.tobytes()).hexdigest()
+    grid = _grid_digest()
     env = _cache.environment_key(MECHANISM, ("gas.py",))
     return f"{kind};{inputs!r};T_GRID={grid};T_MIN={T_MIN!r};T_MAX={T_MAX!r};{env}"
 
@@ -166,6 +214,38 @@ class PiecewisePolynomials:
             out += c.take(i, axis=0)
         return out
 
+    @cached_property
+    def _floats(self) -> tuple[list[float], list[list[float]]]:
+        """Breakpoints and coefficients as Python floats (for :meth:`value`)."""
+        return self.x.tolist(), [c.tolist() for c in self._coef]
+
+    def value(self, T: float) -> float:
+        """The value at one temperature ``T`` (K, in ``[x[0], x[-1]]``) of a single polynomial
+        (no trailing axes), as a float.
+
+        The operations of :meth:`interval` and :meth:`evaluate`, one by one, in Python floats:
+        the same number to the last bit, without numpy's overhead per call (a root finder
+        calls it some fifty times).
+
+        Examples
+        --------
+        >>> p = PiecewisePolynomials([0.0, 1.0, 2.0], [[1.0, 2.0], [0.0, 1.0]])
+        >>> p.value(1.5) == float(p.evaluate(*p.interval(1.5)))
+        True
+        """
+        x, coef = self._floats
+        if self._step is None:
+            i = min(max(bisect.bisect_right(x, T) - 1, 0), self._last)
+        else:
+            u = (T - x[0]) / self._step
+            u = u if u > 0.0 else 0.0  # np.fmax(u, 0.0)
+            i = int(min(u, self._last))
+        s = T - x[i]
+        out = coef[0][i]
+        for c in coef[1:]:
+            out = out * s + c[i]
+        return out
+
 
 def parse_composition(composition) -> tuple[tuple[str, float], ...]:
     """Normalised mole fractions as a sorted tuple of ``(species, x)`` pairs.
@@ -209,6 +289,10 @@ class GasPropertyTable:
     outside it cp, conductivity and viscosity are clamped to the end values and the enthalpy is
     extended linearly, without a warning in the hot loop: call :meth:`check_range` once on a
     converged state to be warned.
+
+    The transport fits (conductivity, viscosity) are the ``_transport`` pair when given, else
+    computed from ``composition`` on first use (Cantera's mixture-averaged transport, kept with
+    the table and on disk): the same numbers whenever they are computed.
     """
 
     composition: tuple[tuple[str, float], ...]
@@ -217,8 +301,26 @@ class GasPropertyTable:
     x_h2o: float
     _cp: PiecewisePolynomials = field(repr=False)
     _h: PiecewisePolynomials = field(repr=False)
-    _k: PiecewisePolynomials = field(repr=False)
-    _mu: PiecewisePolynomials = field(repr=False)
+    _transport: tuple[PiecewisePolynomials, PiecewisePolynomials] | None = field(
+        default=None, repr=False, compare=False
+    )
+
+    @cached_property
+    def _transport_fits(self) -> tuple[PiecewisePolynomials, PiecewisePolynomials]:
+        """Conductivity (W/(m K)) and viscosity (Pa s) fits: given, or computed once."""
+        if self._transport is not None:
+            return self._transport
+        return _transport_fits(self.composition)
+
+    @property
+    def _k(self) -> PiecewisePolynomials:
+        """Conductivity fit, W/(m K) (computed on first use)."""
+        return self._transport_fits[0]
+
+    @property
+    def _mu(self) -> PiecewisePolynomials:
+        """Viscosity fit, Pa s (computed on first use)."""
+        return self._transport_fits[1]
 
     @property
     def _fits(self):
@@ -228,12 +330,12 @@ class GasPropertyTable:
     @cached_property
     def _cp_ends(self) -> tuple[float, float]:
         """cp (J/(kg K)) at T_MIN and T_MAX: the slopes of the enthalpy's linear extensions."""
-        cp = self._fits[0]
+        cp = self._cp
         lo, hi = cp.evaluate(*cp.interval(np.array([T_MIN, T_MAX])))
         return float(lo), float(hi)
 
     def _eval(self, which: int, T):
-        fit = self._fits[which]
+        fit = self._cp if which == 0 else self._h if which == 1 else self._fits[which]
         return fit.evaluate(*fit.interval(_clamp(T)))
 
     def check_range(self, T) -> bool:
@@ -273,6 +375,13 @@ class GasPropertyTable:
             + cp_hi * np.maximum(T - T_MAX, 0.0)
         )
 
+    def _enthalpy_at(self, T: float) -> float:
+        """:meth:`enthalpy` at one temperature ``T`` (K), as a float: the same number to the
+        last bit, ~10 times faster (for root finding)."""
+        cp_lo, cp_hi = self._cp_ends
+        t = min(max(T, T_MIN), T_MAX)  # _clamp
+        return self._h.value(t) + cp_lo * min(T - T_MIN, 0.0) + cp_hi * max(T - T_MAX, 0.0)
+
     def conductivity(self, T):
         """Thermal conductivity, W/(m K)."""
         return self._eval(2, T)
@@ -290,64 +399,126 @@ class GasPropertyTable:
         return self.cp(T) * self.viscosity(T) / self.conductivity(T)
 
 
-def _table_arrays(composition: tuple[tuple[str, float], ...], gas=None) -> dict:
-    """Cantera sampled on :data:`T_GRID` and fitted (scipy's ``CubicSpline``): the arrays of a
-    :class:`GasPropertyTable` (``gas``: a GRI-Mech 3.0 solution, default :func:`gri30`)."""
-    from scipy.interpolate import CubicSpline
-
-    gas = gri30() if gas is None else gas
-    unknown = [s for s, _ in composition if s not in gas.species_names]
+def _species_of(composition, gas) -> tuple[str, ...]:
+    """The species of ``composition`` in the order of ``gas`` (GRI-Mech 3.0); an unknown one
+    is refused (:class:`~rotarykiln.errors.InputError`)."""
+    names = gas.species_names
+    unknown = [s for s, _ in composition if s not in names]
     if unknown:
         raise InputError("gas.composition", ",".join(unknown), f"a species of {MECHANISM}")
+    return tuple(sorted((s for s, _ in composition), key=names.index))
+
+
+def _thermo_arrays(composition: tuple[tuple[str, float], ...], gas=None) -> dict:
+    """The thermodynamic arrays of a :class:`GasPropertyTable`: molar mass (kg/mol), CO2 and
+    H2O mole fractions, and the cp (J/(kg K)) and h (J/kg) splines (``x``, ``c``).
+
+    Cantera's cp of the composition sampled on :data:`T_GRID` (on :func:`_thermo_phase` of its
+    species: GRI-Mech 3.0's numbers to the last bit), fitted by scipy's ``CubicSpline``, the
+    enthalpy its antiderivative shifted to 0 at :data:`T_REF`. ``gas``: the GRI-Mech 3.0
+    solution the species come from (default :func:`gri30`).
+    """
+    from scipy.interpolate import CubicSpline
+
+    full = gri30() if gas is None else gas
+    phase = _thermo_phase(_species_of(composition, full), gas)
     X = dict(composition)
     temps = T_GRID
     cp = np.empty_like(temps)
-    k = np.empty_like(temps)
-    mu = np.empty_like(temps)
+    phase.TPX = temps[0], 101325.0, X  # then the temperature alone: the same states
     for i, T in enumerate(temps):
-        gas.TPX = T, 101325.0, X
-        cp[i] = gas.cp_mass
-        k[i] = gas.thermal_conductivity
-        mu[i] = gas.viscosity
+        phase.TP = T, 101325.0
+        cp[i] = phase.cp_mass
     cp_fit = CubicSpline(temps, cp)
     h_fit = cp_fit.antiderivative()
     offset = float(h_fit(T_REF))
     h_fit.c[-1, :] -= offset  # h(T_REF) = 0; PPoly is piecewise: shift every piece
-    names = gas.species_names
-    gas.TPX = 300.0, 101325.0, X
-    xs = gas.X
-    k_fit, mu_fit = CubicSpline(temps, k), CubicSpline(temps, mu)
+    phase.TPX = 300.0, 101325.0, X
+    x = dict(zip(phase.species_names, phase.X, strict=True))
     return {
-        "molar_mass": np.float64(gas.mean_molecular_weight / 1000.0),
-        "x_co2": np.float64(xs[names.index("CO2")]),
-        "x_h2o": np.float64(xs[names.index("H2O")]),
-        **{f"{n}_x": f.x for n, f in (("cp", cp_fit), ("h", h_fit), ("k", k_fit), ("mu", mu_fit))},
-        **{f"{n}_c": f.c for n, f in (("cp", cp_fit), ("h", h_fit), ("k", k_fit), ("mu", mu_fit))},
+        "molar_mass": np.float64(phase.mean_molecular_weight / 1000.0),
+        "x_co2": np.float64(x.get("CO2", 0.0)),
+        "x_h2o": np.float64(x.get("H2O", 0.0)),
+        **{f"{n}_x": f.x for n, f in (("cp", cp_fit), ("h", h_fit))},
+        **{f"{n}_c": f.c for n, f in (("cp", cp_fit), ("h", h_fit))},
     }
 
 
+def _transport_arrays(composition: tuple[tuple[str, float], ...], gas=None) -> dict:
+    """The transport arrays of a :class:`GasPropertyTable`: the conductivity (W/(m K)) and
+    viscosity (Pa s) splines (``x``, ``c``): Cantera's mixture-averaged values (GRI-Mech 3.0,
+    ``gas``, default :func:`gri30`) on :data:`T_GRID`, fitted by scipy's ``CubicSpline``.
+
+    The composition is set once and the temperature alone changed after (the same state, so
+    the same numbers as setting it in full at every temperature).
+    """
+    from scipy.interpolate import CubicSpline
+
+    gas = gri30() if gas is None else gas
+    _species_of(composition, gas)
+    temps = T_GRID
+    k = np.empty_like(temps)
+    mu = np.empty_like(temps)
+    gas.TPX = temps[0], 101325.0, dict(composition)
+    for i, T in enumerate(temps):
+        gas.TP = T, 101325.0
+        k[i] = gas.thermal_conductivity
+        mu[i] = gas.viscosity
+    k_fit, mu_fit = CubicSpline(temps, k), CubicSpline(temps, mu)
+    return {
+        **{f"{n}_x": f.x for n, f in (("k", k_fit), ("mu", mu_fit))},
+        **{f"{n}_c": f.c for n, f in (("k", k_fit), ("mu", mu_fit))},
+    }
+
+
+def _table_arrays(composition: tuple[tuple[str, float], ...], gas=None) -> dict:
+    """Cantera sampled on :data:`T_GRID` and fitted (scipy's ``CubicSpline``): every array of
+    a :class:`GasPropertyTable` (:func:`_thermo_arrays` and :func:`_transport_arrays`;
+    ``gas``: a GRI-Mech 3.0 solution, default :func:`gri30`)."""
+    return {**_thermo_arrays(composition, gas), **_transport_arrays(composition, gas)}
+
+
+def _fit_pair(a: dict, name: str) -> PiecewisePolynomials:
+    """The fit ``name`` (``cp``, ``h``, ``k``, ``mu``) of the arrays ``a``: breakpoints
+    ``<name>_x`` (K) and coefficients ``<name>_c``."""
+    return PiecewisePolynomials(a[f"{name}_x"], a[f"{name}_c"])
+
+
 def _table_from_arrays(composition, a: dict) -> GasPropertyTable:
-    fits = [PiecewisePolynomials(a[f"{n}_x"], a[f"{n}_c"]) for n in ("cp", "h", "k", "mu")]
+    """The table of arrays ``a`` (:func:`_thermo_arrays`, with or without the transport ones:
+    computed on first use when absent)."""
+    transport = (_fit_pair(a, "k"), _fit_pair(a, "mu")) if "k_c" in a else None
     return GasPropertyTable(
         composition=composition,
         molar_mass=float(a["molar_mass"]),
         x_co2=float(a["x_co2"]),
         x_h2o=float(a["x_h2o"]),
-        _cp=fits[0],
-        _h=fits[1],
-        _k=fits[2],
-        _mu=fits[3],
+        _cp=_fit_pair(a, "cp"),
+        _h=_fit_pair(a, "h"),
+        _transport=transport,
     )
 
 
 @lru_cache(maxsize=256)
 def _cantera_table(composition: tuple[tuple[str, float], ...]) -> GasPropertyTable:
-    key = _cache_key("table", composition)
+    key = _cache_key("thermo", composition)
     arrays = _cache.load("table", key)
     if arrays is None:
-        arrays = _table_arrays(composition)
+        arrays = _thermo_arrays(composition)
         _cache.store("table", key, arrays)
     return _table_from_arrays(composition, arrays)
+
+
+def _transport_fits(composition) -> tuple[PiecewisePolynomials, PiecewisePolynomials]:
+    """Conductivity and viscosity fits of ``composition`` (from the disk cache, else computed:
+    :func:`_transport_arrays`); kept in memory by the table that asks
+    (:attr:`GasPropertyTable._transport_fits`)."""
+    key = _cache_key("transport", composition)
+    arrays = _cache.load("transport", key)
+    if arrays is None:
+        arrays = _transport_arrays(composition)
+        _cache.store("transport", key, arrays)
+    return _fit_pair(arrays, "k"), _fit_pair(arrays, "mu")
 
 
 def gas_table(composition) -> GasPropertyTable:
@@ -508,20 +679,23 @@ def _burn_state(fuel, fuel_flow, air_flow, fuel_temperature, air_temperature, ga
     h_products = float(mix.enthalpy_mass)
     comp = parse_composition(x)
     table = gas_table(comp)
+    # table._enthalpy_at(t) is float(table.enthalpy(t)) to the last bit, without numpy's
+    # overhead per call (the root finding calls it some fifty times): the same root
+    enthalpy = table._enthalpy_at
     m = fuel_flow + air_flow
     q = m * (h_reactants - h_products)
-    target = float(table.enthalpy(t_in)) + q / m
+    target = enthalpy(t_in) + q / m
     # bracket from T_MIN, not t_in: a very lean mixture releases a hair less than nothing
     # (equilibrium NO at 1200 K is endothermic) and its products sit just below t_in
     lo, hi = T_MIN, 2 * T_MAX
-    if float(table.enthalpy(lo)) > target or float(table.enthalpy(hi)) < target:
+    if enthalpy(lo) > target or enthalpy(hi) < target:
         raise InputError(
             "air_flow",
             f"{air_flow:.6g} kg/s",
             f"enough to burn {fuel_flow:.6g} kg/s of fuel (air/fuel mass ratio "
             f"{air_flow / fuel_flow:.4g}: the products would leave outside [{lo:g}, {hi:g}] K)",
         )
-    t_ad = float(brentq(lambda t: float(table.enthalpy(t)) - target, lo, hi))
+    t_ad = float(brentq(lambda t: enthalpy(t) - target, lo, hi))
     return comp, t_in, t_ad, q
 
 

@@ -13,6 +13,7 @@ __all__ = [
     "PROFILE_POINTS",
     "kiln_model",
     "kiln_profile_model",
+    "kiln_solutions",
     "profile_columns",
     "transport_model",
 ]
@@ -25,36 +26,18 @@ def _scalars(summary: Mapping) -> dict:
     return {k: v for k, v in summary.items() if isinstance(v, int | float | str | bool)}
 
 
-def kiln_model(case: dict) -> dict:
-    """Steady kiln model of a case (:func:`rotarykiln.commands.kiln_runs.run_kiln_case`): its summary
-    as scalars (outlet temperatures, heat flows, shell loss, efficiency, conversions and
-    yields of a reacting bed, balances, Newton iterations; NaN values left out)."""
+def _summary_outputs(sol) -> dict:
     import math
 
-    from rotarykiln.case import parse_case
-    from rotarykiln.commands.kiln_runs import run_kiln_case
-
-    summary = run_kiln_case(parse_case(case)).summary()
+    summary = sol.summary()
     summary.pop("name", None)
     out = _scalars(summary)
     return {k: v for k, v in out.items() if not (isinstance(v, float) and math.isnan(v))}
 
 
-def kiln_profile_model(case: dict) -> dict:
-    """Steady kiln model: the summary of :func:`kiln_model` plus the axial profiles as scalars.
-
-    Profiles at :data:`PROFILE_POINTS` evenly spaced positions z (m, from the solids inlet),
-    named ``"<quantity>@<z>"`` with quantities ``bed_temperature``, ``gas_temperature``,
-    ``wall_temperature`` (inner wall surface) and ``shell_temperature`` (lined walls), in K:
-    e.g. ``"bed_temperature@1.2200"``. Uncertainty bands and calibration read these columns
-    (see :func:`profile_columns`).
-    """
+def _profile_outputs(sol) -> dict:
     import numpy as np
 
-    from rotarykiln.case import parse_case
-    from rotarykiln.commands.kiln_runs import run_kiln_case
-
-    sol = run_kiln_case(parse_case(case))
     summary = sol.summary()
     summary.pop("name", None)
     out = _scalars(summary)
@@ -70,6 +53,101 @@ def kiln_profile_model(case: dict) -> dict:
         for zi, v in zip(z, values, strict=True):
             out[f"{q}@{zi:.4f}"] = float(v)
     return out
+
+
+def kiln_solutions(cases, warnings_out=None, *, base=None, changes=None) -> list:
+    """Solve the steady kiln model of many case dicts together
+    (:func:`rotarykiln.kiln.steady.batch.solve_batch`: cases of one model structure and grid
+    in batches): per case its :class:`~rotarykiln.kiln.results.solution.KilnSolution`, or the
+    exception its parsing, building or solve raised (never raised here).
+
+    ``warnings_out``: a list of one list per case, which receives the warnings of that case.
+    ``base`` and ``changes``: the base case dict and, per case, the fields it changes (a
+    study's design): the base is then parsed once and each case made by
+    :func:`rotarykiln.case.case_with` (the same case as parsing its dict, a fraction of the
+    cost).
+    """
+    import warnings
+
+    from rotarykiln.case import case_with, parse_case
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.steady.batch import solve_batch
+
+    cases = list(cases)
+    caught = warnings_out if warnings_out is not None else [[] for _ in cases]
+    out: list = [None] * len(cases)
+    by_cells: dict[int, list] = {}
+    base_case = None
+    if base is not None and changes is not None:
+        try:
+            base_case = parse_case(base)
+        except Exception:  # the base alone is refused: each case parsed as it is
+            base_case = None
+    for i, case in enumerate(cases):
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            try:
+                if base_case is not None:
+                    try:
+                        parsed = case_with(base_case, changes[i])
+                    except Exception:  # a path case_with does not take: the whole dict
+                        parsed = parse_case(case)
+                else:
+                    parsed = parse_case(case)
+                kiln, cells = kiln_from_case(parsed)
+                by_cells.setdefault(cells, []).append((i, kiln))
+            except Exception as exc:
+                out[i] = exc
+        caught[i].extend(w)
+    for cells, items in by_cells.items():
+        per_case: list[list] = []
+        sols = solve_batch([k for _, k in items], cells, warnings_out=per_case)
+        for (i, _), sol, w in zip(items, sols, per_case, strict=True):
+            out[i] = sol
+            caught[i].extend(w)
+    return out
+
+
+def _batched(outputs):
+    def run(cases, warnings_out=None, *, base=None, changes=None):
+        return [
+            s if isinstance(s, Exception) else outputs(s)
+            for s in kiln_solutions(cases, warnings_out, base=base, changes=changes)
+        ]
+
+    return run
+
+
+def kiln_model(case: dict) -> dict:
+    """Steady kiln model of a case (:func:`rotarykiln.commands.kiln_runs.run_kiln_case`): its summary
+    as scalars (outlet temperatures, heat flows, shell loss, efficiency, conversions and
+    yields of a reacting bed, balances, Newton iterations; NaN values left out).
+
+    ``kiln_model.batched(cases, warnings_out)`` solves many cases together
+    (:func:`kiln_solutions`); the sweep runner uses it."""
+    from rotarykiln.case import parse_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
+
+    return _summary_outputs(run_kiln_case(parse_case(case)))
+
+
+def kiln_profile_model(case: dict) -> dict:
+    """Steady kiln model: the summary of :func:`kiln_model` plus the axial profiles as scalars.
+
+    Profiles at :data:`PROFILE_POINTS` evenly spaced positions z (m, from the solids inlet),
+    named ``"<quantity>@<z>"`` with quantities ``bed_temperature``, ``gas_temperature``,
+    ``wall_temperature`` (inner wall surface) and ``shell_temperature`` (lined walls), in K:
+    e.g. ``"bed_temperature@1.2200"``. Uncertainty bands and calibration read these columns
+    (see :func:`profile_columns`). Batched as :func:`kiln_model`.
+    """
+    from rotarykiln.case import parse_case
+    from rotarykiln.commands.kiln_runs import run_kiln_case
+
+    return _profile_outputs(run_kiln_case(parse_case(case)))
+
+
+kiln_model.batched = _batched(_summary_outputs)
+kiln_profile_model.batched = _batched(_profile_outputs)
 
 
 def profile_columns(names) -> dict[str, list[tuple[float, str]]]:

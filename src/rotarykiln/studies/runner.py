@@ -41,6 +41,8 @@ log = logging.getLogger(__name__)
 __all__ = ["run_sweep", "run_case", "EXECUTORS", "model_id", "dask_client"]
 
 EXECUTORS = ("process", "serial", "dask")
+#: Most cases of a model with a batched form solved together by default (one chunk).
+BATCH_CASES = 256
 _LOCAL_SCHEDULERS = ("synchronous", "threads", "processes", "single-threaded", "sync")
 
 
@@ -65,12 +67,7 @@ def run_case(func: Callable, base: Mapping, spec: CaseSpec, create: bool = False
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         _run_into(row, func, base, spec, create)
-    seen: list[str] = []
-    for w in caught:
-        text = f"{w.category.__name__}: {w.message}".replace("\n", " ")
-        if text not in seen:
-            seen.append(text)
-    row["warnings"] = "; ".join(seen)
+    row["warnings"] = _warning_text(caught)
     row["elapsed_s"] = time.perf_counter() - t0
     return row
 
@@ -78,29 +75,102 @@ def run_case(func: Callable, base: Mapping, spec: CaseSpec, create: bool = False
 def _run_into(row: dict, func: Callable, base: Mapping, spec: CaseSpec, create: bool) -> None:
     try:
         case = with_values(base, spec.values, create=create)
-        out = func(case)
-        if not isinstance(out, Mapping):
-            raise TypeError(f"the function returned {type(out).__name__}, not a dict of scalars")
-        clean = {}
-        bad = []
-        for k, v in out.items():
-            if hasattr(v, "item") and getattr(v, "ndim", 1) == 0:
-                v = v.item()  # numpy scalar
-            if not _scalar(v):
-                raise TypeError(f"output {k!r} is a {type(v).__name__}, not a scalar")
-            if isinstance(v, float) and not math.isfinite(v):
-                bad.append(str(k))
-            clean[str(k)] = v
-        row["outputs"] = clean
-        if bad:
-            row["error"] = f"non-finite output: {', '.join(bad)}"
+        _outputs_into(row, func(case))
     except Exception as exc:  # recorded per case, the sweep goes on
-        tb = traceback.extract_tb(exc.__traceback__)
-        where = f" ({tb[-1].name}:{tb[-1].lineno})" if tb else ""
-        row["error"] = f"{type(exc).__name__}: {exc}{where}".replace("\n", " ")
+        _error_into(row, exc)
+
+
+def _outputs_into(row: dict, out) -> None:
+    """The outputs of a model into ``row``: scalars only, non-finite ones an error."""
+    if isinstance(out, Exception):
+        raise out
+    if not isinstance(out, Mapping):
+        raise TypeError(f"the function returned {type(out).__name__}, not a dict of scalars")
+    clean = {}
+    bad = []
+    for k, v in out.items():
+        if hasattr(v, "item") and getattr(v, "ndim", 1) == 0:
+            v = v.item()  # numpy scalar
+        if not _scalar(v):
+            raise TypeError(f"output {k!r} is a {type(v).__name__}, not a scalar")
+        if isinstance(v, float) and not math.isfinite(v):
+            bad.append(str(k))
+        clean[str(k)] = v
+    row["outputs"] = clean
+    if bad:
+        row["error"] = f"non-finite output: {', '.join(bad)}"
+
+
+def _error_into(row: dict, exc: BaseException) -> None:
+    tb = traceback.extract_tb(exc.__traceback__)
+    where = f" ({tb[-1].name}:{tb[-1].lineno})" if tb else ""
+    row["error"] = f"{type(exc).__name__}: {exc}{where}".replace("\n", " ")
+
+
+def _warning_text(caught) -> str:
+    seen: list[str] = []
+    for w in caught:
+        text = f"{w.category.__name__}: {w.message}".replace("\n", " ")
+        if text not in seen:
+            seen.append(text)
+    return "; ".join(seen)
+
+
+def _run_batched(func, base, specs, create) -> list[dict]:
+    """Run the cases ``specs`` of one chunk by the model's batched form
+    (``func.batched(cases, warnings_out, base=, changes=)``: every case solved together
+    where the model can; ``changes`` the fields each case changes in ``base``); never
+    raises: a case's failure is its row's ``error``."""
+    t0 = time.perf_counter()
+    rows = [
+        {"case_id": s.case_id, "group": s.group, "outputs": {}, "error": "", "warnings": ""}
+        for s in specs
+    ]
+    cases, where = [], []
+    for i, s in enumerate(specs):
+        try:
+            cases.append(with_values(base, s.values, create=create))
+            where.append(i)
+        except Exception as exc:
+            _error_into(rows[i], exc)
+    caught: list[list] = [[] for _ in cases]
+    with warnings.catch_warnings(record=True) as shared:
+        warnings.simplefilter("always")
+        try:
+            changes = [specs[i].values for i in where]
+            outs = list(func.batched(cases, caught, base=base, changes=changes))
+        except Exception as exc:  # the batch itself broke: each case alone
+            log.warning("batched model failed (%s); its cases run one at a time", exc)
+            outs = None
+    if outs is None:
+        return [run_case(func, base, s, create) for s in specs]
+    elapsed = (time.perf_counter() - t0) / max(1, len(specs))
+    for k, i in enumerate(where):
+        try:
+            _outputs_into(rows[i], outs[k])
+        except Exception as exc:
+            _error_into(rows[i], exc)
+        rows[i]["warnings"] = _warning_text([*caught[k], *shared])
+    for r in rows:
+        r["elapsed_s"] = elapsed
+    return rows
+
+
+class _unbatched:
+    """A model with its batched form hidden (``batch=1``): picklable, the same model id."""
+
+    def __init__(self, func):
+        self.func = func
+        self.__module__ = getattr(func, "__module__", "")
+        self.__qualname__ = getattr(func, "__qualname__", repr(func))
+
+    def __call__(self, case):
+        return self.func(case)
 
 
 def _run_chunk(func, base, specs, create):
+    if getattr(func, "batched", None) is not None and len(specs) > 1:
+        return _run_batched(func, base, specs, create)
     return [run_case(func, base, s, create) for s in specs]
 
 
@@ -455,6 +525,7 @@ def run_sweep(
     flush_seconds: float = 2.0,
     callback: Callable[[int, int, int], None] | None = None,
     dask_timeout: float = 10.0,
+    batch: int | None = None,
 ) -> SweepResult:
     """Run ``func`` on every case of a design and gather one table (optionally persisted).
 
@@ -499,6 +570,11 @@ def run_sweep(
         ``callback(done, failed, total)`` after each row (in the calling process).
     dask_timeout : float
         Seconds to wait for a scheduler address, s.
+    batch : int, optional
+        For a model with a batched form (``func.batched``, as the kiln models of
+        :mod:`rotarykiln.studies.models`): the most cases solved together, a chunk (default:
+        the cases over two chunks per worker, at most :data:`BATCH_CASES`); 1: one case at a
+        time. Ignored for other models.
 
     Returns
     -------
@@ -569,9 +645,18 @@ def run_sweep(
     reused = len(cases) - len(todo)
 
     workers = max(1, max_workers or os.cpu_count() or 1)
-    size = chunk_size or max(
-        1, min(32, math.ceil(len(unique) / (workers * max(1, chunks_per_worker))))
-    )
+    batched = getattr(func, "batched", None) is not None and batch != 1
+    if batch is not None and (isinstance(batch, bool) or int(batch) != batch or batch < 1):
+        raise InputError("sweep.batch", batch, "an integer >= 1 (cases solved together)")
+    if batched and chunk_size is None:
+        # a chunk is a batch: few, large chunks (two per worker)
+        size = max(1, min(batch or BATCH_CASES, math.ceil(len(unique) / (workers * 2))))
+    else:
+        size = chunk_size or max(
+            1, min(32, math.ceil(len(unique) / (workers * max(1, chunks_per_worker))))
+        )
+    if not batched and getattr(func, "batched", None) is not None:
+        func = _unbatched(func)
     chunks = _chunks(unique, size)
     if executor == "process":
         workers = min(workers, max(1, len(chunks)))

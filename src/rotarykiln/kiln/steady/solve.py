@@ -14,7 +14,7 @@ from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.results.solution import KilnSolution
 from rotarykiln.kiln.steady import continuation as steady
 
-__all__ = ["solve_kiln", "ENERGY_RTOL", "zigzag"]
+__all__ = ["solve_kiln", "finish_solution", "newton_options", "ENERGY_RTOL", "zigzag"]
 
 #: Energy closure demanded of every reacting solve (issue 7).
 ENERGY_RTOL = 1e-6
@@ -116,22 +116,7 @@ def solve_kiln(
         raise InputError("solver.cells", n_cells, "an integer >= 4")
     res = KilnResidual(kiln, int(n_cells))
     q_ref = res.q_ref
-    i0 = res.i_species
-    species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
-    if res.depth is not None:
-        species.append("bed depth (Kramers)")
-    where = steady.locator(res.z, steady.equation_names(res.wall, species))
-    floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
-    squared = np.zeros(res.nv, dtype=bool)
-    squared[i0 : i0 + res.nb] = res.sqrt_mask & _consumed_at_first_order(kiln, res.bed_var)
-    kw = dict(
-        tol=tol,
-        max_iter=max_iter,
-        temperature_vars=i0,
-        where=where,
-        step_floor=floor,
-        squared=squared,
-    )
+    kw = newton_options(res, tol=tol, max_iter=max_iter)
     if initial is None and (kiln.chemistry.mechanism.reactions or res.n > SEQUENCE_INERT_MIN):
 
         def make_residual(n):
@@ -150,7 +135,49 @@ def solve_kiln(
     else:
         x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
         x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
-    R, fl, prod, rate, (tb_n, tg_n, qb, qg) = res.evaluate(x[None], full=True)
+    return finish_solution(res, x, total, check_balances=check_balances)
+
+
+def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
+    """The keyword options of :func:`~rotarykiln.kiln.steady.newton.newton_banded` for the
+    residual ``res``: tolerance, iterations, which unknowns are temperatures, where each
+    unknown lies (for errors), the finite-difference step floors and the squared unknowns."""
+    kiln, i0 = res.kiln, res.i_species
+    species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
+    if res.depth is not None:
+        species.append("bed depth (Kramers)")
+    where = steady.locator(res.z, steady.equation_names(res.wall, species))
+    floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
+    squared = np.zeros(res.nv, dtype=bool)
+    squared[i0 : i0 + res.nb] = res.sqrt_mask & _consumed_at_first_order(kiln, res.bed_var)
+    return dict(
+        tol=tol,
+        max_iter=max_iter,
+        temperature_vars=i0,
+        where=where,
+        step_floor=floor,
+        squared=squared,
+    )
+
+
+def finish_solution(
+    res: KilnResidual,
+    x: np.ndarray,
+    total: int,
+    *,
+    check_balances: bool = True,
+    evaluated=None,
+) -> KilnSolution:
+    """The :class:`KilnSolution` of the converged unknowns ``x`` (n, nv) of ``res`` after
+    ``total`` Newton iterations: the profiles, the bound and oscillation checks, the closures'
+    validity ranges, the global balances (checked with ``check_balances``: ConvergenceError
+    beyond 1e-8 for the elements, 1e-6 for the energy) and the energy sheet. ``evaluated``:
+    ``res.evaluate(x[None], full=True)`` when already computed (a batch evaluates all its
+    cases at once)."""
+    kiln, q_ref, i0 = res.kiln, res.q_ref, res.i_species
+    if evaluated is None:
+        evaluated = res.evaluate(x[None], full=True)
+    R, fl, prod, rate, (tb_n, tg_n, qb, qg) = evaluated
     R, prod, rate = R[0], prod[0], rate[0]
     tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
     fl = {key: np.broadcast_to(v, (1, res.n))[0] * np.ones(res.n) for key, v in fl.items()}

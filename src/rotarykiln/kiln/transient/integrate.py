@@ -29,11 +29,12 @@ A non-reacting tracer rides with the bed: its mass :math:`m_j` in each cell leav
 (:func:`~rotarykiln.kiln.bed.dispersion.dispersion_sources`); a pulse in the feed gives the RTD of
 the dynamic model.
 
-The system is integrated by scipy's BDF (variable order, implicit, stiff) with the Jacobian
-built the steady model's way (:meth:`TransientKiln.jacobian`): the block-tridiagonal band by
-forward differences in 3 x block colours (:func:`~rotarykiln.kiln.steady.newton.colour_batch`), all
-evaluated in one batched call of the right-hand side, as a sparse matrix; BDF reuses it across
-steps as long as its Newton iteration converges. Quadrature states integrate the energy and
+The system is integrated by scipy's BDF (variable order, implicit, stiff) with a Jacobian by
+forward differences (:meth:`TransientKiln.jacobian`): the columns whose cells do not overlap
+perturbed together (the couplings of each variable to the neighbouring cells probed on the
+block-tridiagonal band of the steady Newton, :meth:`TransientKiln.probe`), all evaluated in one
+batched call of the right-hand side, as a sparse matrix; BDF reuses it across steps as long as
+its Newton iteration converges. Quadrature states integrate the energy and
 every species across the two ends (feed, discharge, gas inlet and outlet), the shell loss, the
 heat released and the heat of reaction, so the energy and element balances over time are
 checked against the inventories.
@@ -77,6 +78,8 @@ JAC_STEP = 1e-7
 #: Floors of the Jacobian steps: temperatures (K), species flows (over the inlet flows, the
 #: steady solve's), tracer mass (kg; the tracer rows are linear in it).
 JAC_FLOOR_T, JAC_FLOOR_SPECIES, JAC_FLOOR_TRACER = 1.0, 1e-6, 1.0
+#: Most output states whose boundary flows are evaluated in one batched call.
+COLLECT_BATCH = 64
 
 
 @dataclass
@@ -134,6 +137,10 @@ class TransientKiln:
                 [JAC_FLOOR_TRACER],
             ]
         )
+        self._floor_flat = np.tile(self.jac_floor, self.n)
+        self._bed_mass = res.kiln.bed.bulk_density * res.grid.bed_area * np.ones(self.n)
+        #: which cells each variable's column reaches (offsets -1, 0, +1; :meth:`probe`)
+        self.reach: np.ndarray | None = None
         self._jac_structure = None
 
     # --- states --------------------------------------------------------------------------
@@ -194,9 +201,14 @@ class TransientKiln:
         return float(energy), mb.sum(0), mg.sum(0)
 
     # --- the right-hand side ---------------------------------------------------------------
-    def rhs(self, t, y, schedule: Schedule, run: _Run, fluxes: bool = False):
+    def rhs(
+        self, t, y, schedule: Schedule, run: _Run, fluxes: bool = False, quadrature: bool = True
+    ):
         """dy/dt at ``t``; ``y`` of shape (size,) or (size, k) (a batch of k states, for the
-        finite-difference Jacobian: the residual is evaluated once for all of them)."""
+        finite-difference Jacobian: the residual is evaluated once for all of them). Without
+        ``quadrature`` the rates of the quadrature states are left 0 (the Jacobian's batch:
+        its quadrature rows are empty). With ``fluxes``, also the flows across the boundary
+        (:meth:`boundary`): of the state, or arrays over the batch."""
         res, hold = self.res, self.holdup
         run.calls += 1
         run.t_max = max(run.t_max, t)
@@ -207,19 +219,26 @@ class TransientKiln:
         x, tracer = blk_in[..., : self.nv], blk_in[..., self.nv]
         u = schedule.inputs(t, run.segment)
         R, fl, prod, _, (tb_n, tg_n, qb, qg) = res.evaluate(x, full=True, inputs=u)
-        R = R.copy()
         s = u.speed_factor
         dz = res.dz
-        hb_nodes = res.bed_enthalpy(np.maximum(tb_n, T_FLOOR))
-        Hb = (qb * hb_nodes).sum(-1)
+        n = self.n
+        # the bed enthalpies at the faces and the heat capacity dh/dT at the cells' outlets
+        # (central differences of CP_STEP) in one call of the enthalpy (n + 1 + 2 n points)
+        tb_c = np.maximum(tb_n, T_FLOOR)
+        tb = tb_c[..., 1:]
+        h_all = res.bed_enthalpy(np.concatenate([tb_c, tb + CP_STEP, tb - CP_STEP], -1))
+        hb_nodes = h_all[..., : n + 1, :]
+        c_b = (h_all[..., n + 1 : 2 * n + 1, :] - h_all[..., 2 * n + 1 :, :]) / (2 * CP_STEP)
         disp_e = disp_s = None
         D = res.kiln.bed.dispersion
-        holdup_m = res.kiln.bed.bulk_density * res.grid.bed_area * np.ones(self.n)
-        if D > 0 and s != 1.0:
-            disp_e, disp_s = dispersion_sources(D, holdup_m, qb, hb_nodes, dz, res.disperses)
+        holdup_m = self._bed_mass
         if s != 1.0:
             # actual transport = s x the transport of the flows held (the feed unscaled)
-            inner = np.ones(self.n)
+            R = R.copy()
+            if D > 0:
+                disp_e, disp_s = dispersion_sources(D, holdup_m, qb, hb_nodes, dz, res.disperses)
+            Hb = (qb * hb_nodes).sum(-1)
+            inner = np.ones(n)
             inner[0] = 0.0
             R[..., 0] += (s - 1.0) * (Hb[..., 1:] - inner * Hb[..., :-1])
             dq = qb[..., 1:, :] - inner[:, None] * qb[..., :-1, :]
@@ -227,7 +246,7 @@ class TransientKiln:
             if D > 0:
                 R[..., 0] += (1.0 - s) * disp_e
                 R[..., self.sb] += (1.0 - s) * disp_s / res.bed_scale
-        dY = np.zeros_like(Yb)
+        dY = np.empty_like(Yb)
         blk = dY[:, : self.n * self.m].reshape(kb, self.n, self.m)
         # species: d(tau Q)/dt = -R (scaled units)
         db = -R[..., self.sb] / hold.tau_bed[:, None]
@@ -237,50 +256,59 @@ class TransientKiln:
         # bed energy at the outlet face of each cell
         q_b = qb[..., 1:, :]
         h_b = hb_nodes[..., 1:, :]
-        tb = np.maximum(tb_n[..., 1:], T_FLOOR)
-        c_b = (res.bed_enthalpy(tb + CP_STEP) - res.bed_enthalpy(tb - CP_STEP)) / (2 * CP_STEP)
         cap_b = hold.tau_bed * np.maximum((q_b * c_b).sum(-1), 1e-12 * res.bed_scale)
         blk[..., 0] = (-R[..., 0] - hold.tau_bed * (h_b * db).sum(-1) * res.bed_scale) / cap_b
-        # gas energy at the gas outlet face of each cell
+        # gas energy at the gas outlet face of each cell (enthalpy and dh/dT in one call)
         q_g = qg[..., res.gas_out, :]
         tg = np.maximum(tg_n[..., res.gas_out], T_FLOOR)
-        mix = res.mixture
-        h_g = mix.species_enthalpy(tg)
-        c_g = (mix.species_enthalpy(tg + CP_STEP) - mix.species_enthalpy(tg - CP_STEP)) / (
-            2 * CP_STEP
-        )
+        g_all = res.mixture.species_enthalpy(np.concatenate([tg, tg + CP_STEP, tg - CP_STEP], -1))
+        h_g = g_all[..., :n, :]
+        c_g = (g_all[..., n : 2 * n, :] - g_all[..., 2 * n :, :]) / (2 * CP_STEP)
         cap_g = hold.tau_gas * np.maximum((q_g * c_g).sum(-1), 1e-12 * res.gas_scale)
         blk[..., 1] = (-R[..., 1] - hold.tau_gas * (h_g * dg).sum(-1) * res.gas_scale) / cap_g
         # wall nodes: the rows are what each node receives
         blk[..., 2 : res.i_species] = R[..., 2 : res.i_species] / hold.wall
-        # tracer: leaves each cell at s m / tau, disperses with the bed
-        t_out = s * tracer / hold.tau_bed
-        feed_tr = np.full((kb, 1), u.tracer)
-        t_in = np.concatenate([feed_tr, t_out[:, :-1]], -1)
-        d_tr = t_in - t_out
-        if D > 0 and s > 0:
-            bulk = s * qb.sum(-1)
-            bulk[:, 0] = u.feed.sum()
-            tq = np.stack([bulk, np.concatenate([feed_tr, t_out], -1)], -1)
-            _, sp = dispersion_sources(
-                s * D, holdup_m, tq, np.zeros_like(tq), dz, np.array([False, True])
-            )
-            d_tr = d_tr + sp[..., 1]
+        # tracer: leaves each cell at s m / tau, disperses with the bed (none fed and none
+        # held, as in a run without a pulse: nothing moves, exactly)
+        if u.tracer == 0.0 and not tracer.any():
+            d_tr = 0.0
+        else:
+            t_out = s * tracer / hold.tau_bed
+            feed_tr = np.full((kb, 1), u.tracer)
+            t_in = np.concatenate([feed_tr, t_out[:, :-1]], -1)
+            d_tr = t_in - t_out
+            if D > 0 and s > 0:
+                bulk = s * qb.sum(-1)
+                bulk[:, 0] = u.feed.sum()
+                tq = np.stack([bulk, np.concatenate([feed_tr, t_out], -1)], -1)
+                _, sp = dispersion_sources(
+                    s * D, holdup_m, tq, np.zeros_like(tq), dz, np.array([False, True])
+                )
+                d_tr = d_tr + sp[..., 1]
         blk[..., self.nv] = d_tr
         # quadrature: energy and species across the ends, losses, sources
-        flux = self.boundary(u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes)
+        if not (quadrature or fluxes):
+            dY[:, self.n * self.m :] = 0.0
+            return dY[0] if single else dY.T
+        flux = self.boundary(
+            u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes, accumulation_only=not fluxes
+        )
         dY[:, self.n * self.m :] = flux["acc"]
-        dy = dY[0] if single else dY.T
-        if fluxes:
-            return dy, {
-                k: (v[0] if isinstance(v, np.ndarray) and v.ndim else v) for k, v in flux.items()
-            }
-        return dy
+        if not fluxes:
+            return dY[0] if single else dY.T
+        if not single:
+            return dY.T, flux
+        one = {k: v[0] for k, v in flux.items() if k not in ("bed_outlet", "gas_outlet")}
+        for k in ("bed_outlet", "gas_outlet"):
+            one[k] = {name: float(v[0]) for name, v in flux[k].items()}
+        return dY[0], one
 
-    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes=None):
+    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes=None, accumulation_only=False):
         """Flows across the kiln's boundary (W and kg/s), arrays over the batch: the energy
         terms of :func:`~rotarykiln.kiln.accounting.global_balance`, the species across the
-        ends, and the outlets."""
+        ends, and the outlets, the outlet flow of each species too (with
+        ``accumulation_only``, only ``acc``: the right-hand side of the quadrature states, as
+        the integrator needs it)."""
         res = self.res
         s = u.speed_factor
         gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
@@ -289,8 +317,10 @@ class TransientKiln:
         kb = qb.shape[0]
         net_b = u.feed - s * qb[:, -1]
         net_g = qg[:, gi] - qg[:, go]
+        acc = np.concatenate([bal["net"][:, None], net_b, net_g], -1)
+        if accumulation_only:
+            return {"acc": acc}
         out = {
-            "acc": np.concatenate([bal["net"][:, None], net_b, net_g], -1),
             "energy_in_W": bal["energy_in"],
             "energy_out_W": bal["energy_out"],
             "shell_loss_W": bal["shell_loss"],
@@ -305,41 +335,124 @@ class TransientKiln:
             "gas_inlet_temperature_K": np.full(kb, u.gas_temperature),
             "speed_factor": np.full(kb, s),
         }
-        out = {k: v if k == "acc" else np.asarray(v, dtype=float) for k, v in out.items()}
-        out["bed_outlet"] = {n: float(s * qb[0, -1, i]) for i, n in enumerate(res.bed_names)}
-        out["gas_outlet"] = {n: float(qg[0, go, i]) for i, n in enumerate(res.gas_names)}
+        out = {"acc": acc} | {k: np.asarray(v, dtype=float) for k, v in out.items()}
+        out["bed_outlet"] = {n: s * qb[:, -1, i] for i, n in enumerate(res.bed_names)}
+        out["gas_outlet"] = {n: qg[:, go, i] for i, n in enumerate(res.gas_names)}
         return out
 
     def jacobian(self, t, y, schedule: Schedule, run: _Run):
-        """d(dy/dt)/dy at ``t``, ``y`` (CSC), the steady Newton's way: forward differences on
-        the block-tridiagonal band in ``3 m`` colours (cells ``j = c mod 3`` perturbed together
-        for one variable, :func:`~rotarykiln.kiln.steady.newton.colour_batch`), all evaluated with
-        the unperturbed state in one batched call of :meth:`rhs`. Steps ``JAC_STEP``
-        x max(|y|, floor). The quadrature rows and columns are left empty, as in
-        :meth:`sparsity`."""
+        """d(dy/dt)/dy at ``t``, ``y`` (CSC) by forward differences, the columns perturbed
+        together in few colours, all evaluated with the unperturbed state in one batched call
+        of :meth:`rhs` (without its quadrature states).
+
+        A column (variable v of cell j) reaches the rows of the cells ``j + o`` for the offsets
+        o of :attr:`reach` (:meth:`probe`: the wall nodes their own cell, the gas and bed
+        variables the next cell along their flow, the bed both neighbours with dispersion);
+        columns whose reached cells do not overlap share a colour (:meth:`_structure`; Barr's
+        lined kiln: 27 colours instead of the ``3 m`` = 45 of the block-tridiagonal band of
+        the steady Newton, :func:`~rotarykiln.kiln.steady.newton.colour_batch`). Every entry
+        is the difference quotient of its own column, with the step ``JAC_STEP`` x
+        max(|y|, floor) of the band Jacobian: the same entries, to the last bit. The
+        quadrature rows and columns are left empty, as in :meth:`sparsity`.
+        """
         n, m = self.n, self.m
         nm = n * m
-        src, step, indices, indptr, order = self._structure()
+        if self.reach is None:
+            self.probe(t, y, schedule, run)
+        flat_colour, k, src, step, indices, indptr = self._structure()
+        yb = y[:nm]
+        h = JAC_STEP * np.maximum(np.abs(yb), self._floor_flat)
+        h = (yb + h) - yb  # the step actually taken
+        Y = np.empty((k + 1, self.size))
+        Y[:] = y
+        Y[flat_colour, np.arange(nm)] = yb + h
+        F = self.rhs(t, Y.T, schedule, run, quadrature=False).T  # (k + 1, size)
+        dR = F[:k, :nm] - F[k, :nm]  # [colour, row]
+        data = dR.ravel()[src] / h[step]
+        return csc_matrix((data, indices, indptr), shape=(self.size, self.size))
+
+    def probe(self, t, y, schedule: Schedule, run: _Run, spread_only=False) -> np.ndarray:
+        """Which neighbouring cells each variable of a cell reaches: (m, 3) bool over the
+        offsets -1, 0, +1 of the row's cell from the column's, kept in :attr:`reach` (the
+        union over the calls; the cell itself always).
+
+        The block-tridiagonal band Jacobian (``3 m`` colours,
+        :func:`~rotarykiln.kiln.steady.newton.colour_batch`) by forward differences at ``y``
+        and at a state spread about it (temperatures 1 to 50 K higher, the flows scaled by
+        0.9 to 1.1 and kept off 0, a seeded generator): a variable reaches a neighbour when
+        any entry of its column there differs from 0 at either state. The second state keeps
+        the couplings that vanish at ``y`` itself (the enthalpy a flow carries is 0 at
+        298.15 K: a cold kiln). :func:`simulate` probes at each solids speed a segment of the
+        schedule starts or ends with (the inputs of the segment); ``spread_only``: the
+        spread state only (the couplings at ``y`` are already known). The probe costs one
+        batched call of 2 (``3 m + 1``) states: a few Jacobians.
+        """
+        n, m = self.n, self.m
+        nm = n * m
+        i0 = self.res.i_species
         blk = y[:nm].reshape(n, m)
-        h = JAC_STEP * np.maximum(np.abs(blk), self.jac_floor)
-        h = (blk + h) - blk  # the step actually taken
-        Y = np.empty((self.size, 3 * m + 1))
-        Y[:nm, :-1] = colour_batch(blk, h).reshape(3 * m, nm).T
-        Y[:nm, -1] = y[:nm]
-        Y[nm:] = y[nm:, None]
-        F = self.rhs(t, Y, schedule, run)
-        dR = F[:nm, :-1].T - F[:nm, -1]  # [colour, row]
-        data = dR.ravel()[src] / h.ravel()[step]
-        return csc_matrix((data[order], indices, indptr), shape=(self.size, self.size))
+        rng = np.random.default_rng(0)
+        spread = blk.copy()
+        spread[:, :i0] += rng.uniform(1.0, 50.0, (n, i0))
+        spread[:, i0:] = np.abs(spread[:, i0:]) * rng.uniform(0.9, 1.1, (n, m - i0))
+        spread[:, i0:] += rng.uniform(0.01, 0.05, (n, m - i0))
+        src, rows, cols, _ = band_entries(n, m)
+        off = rows // m - cols // m + 1
+        var = cols % m
+        reach = np.zeros((m, 3), dtype=bool) if self.reach is None else self.reach.copy()
+        reach[:, 1] = True
+        nc = 3 * m
+        states = (spread,) if spread_only else (blk, spread)
+        Y = np.empty((len(states), nc + 1, self.size))
+        for state, part in zip(states, Y, strict=True):
+            h = JAC_STEP * np.maximum(np.abs(state), self.jac_floor)
+            h = (state + h) - state
+            part[:nc, :nm] = colour_batch(state, h).reshape(nc, nm)
+            part[nc, :nm] = state.ravel()
+            part[:, nm:] = y[nm:]
+        with np.errstate(all="ignore"):  # a NaN of the spread state only adds couplings
+            F = self.rhs(t, Y.reshape(-1, self.size).T, schedule, run, quadrature=False)
+        F = F.T.reshape(Y.shape)
+        for part in F[..., :nm]:
+            dR = part[:nc] - part[nc]
+            hit = dR.ravel()[src] != 0.0
+            reach[var[hit], off[hit]] = True
+        if self.reach is None or not np.array_equal(reach, self.reach):
+            self.reach = reach
+            self._jac_structure = None
+        return reach
 
     def _structure(self):
-        """The band entries (:func:`~rotarykiln.kiln.steady.newton.band_entries`) and their CSC
-        layout, computed once."""
+        """The colouring of the Jacobian's columns for :attr:`reach` and its CSC layout,
+        computed once per reach.
+
+        A variable reaching ``w`` neighbouring cells (1 to 3, its own among them) takes ``w``
+        colours, cell j the colour ``j mod w``: two of its columns in one colour are ``w`` cells
+        apart or more, so the cells they reach do not overlap. This is the fewest colours for
+        whole cells (a variable may reach any row of a cell): every cell is reached by ``w``
+        columns of each variable. Returns the colour of each flattened column, the number of
+        colours, and for every stored entry (by column, rows sorted) its place in the
+        differences ``dR[colour, row]`` and its column, with the CSC ``indices`` and
+        ``indptr`` of the whole (quadrature-padded) matrix.
+        """
         if self._jac_structure is None:
-            src, rows, cols, step = band_entries(self.n, self.m)
+            n, m = self.n, self.m
+            width = self.reach.sum(1)
+            base = np.concatenate([[0], np.cumsum(width)[:-1]])
+            cells = np.arange(n)
+            flat_colour = (base + cells[:, None] % width).ravel()
+            rows, cols = [], []
+            for o in (-1, 0, 1):
+                j, v = np.nonzero(self.reach[:, o + 1][None, :] & (cells + o >= 0)[:, None])
+                j, v = j[j + o < n], v[j + o < n]
+                rows.append(((j + o)[:, None] * m + np.arange(m)).ravel())
+                cols.append(np.repeat(j * m + v, m))
+            rows, cols = np.concatenate(rows), np.concatenate(cols)
             order = np.lexsort((rows, cols))
-            indptr = np.searchsorted(cols[order], np.arange(self.size + 1))
-            self._jac_structure = (src, step, rows[order], indptr, order)
+            rows, cols = rows[order], cols[order]
+            indptr = np.searchsorted(cols, np.arange(self.size + 1))
+            src = flat_colour[cols] * (n * m) + rows
+            self._jac_structure = (flat_colour, int(width.sum()), src, cols, rows, indptr)
         return self._jac_structure
 
     def sparsity(self):
@@ -474,9 +587,18 @@ def simulate(
         bar = progress_bar(float(until), desc="transient", unit="s", enabled=True)
     states, stamp = [], []
     started = _time.perf_counter()
+    probed = set()
     try:
         for i, (a, b) in enumerate(sched.segments()):
             run.segment = i
+            for tp in (a, b):
+                # the couplings of the Jacobian's columns change with the solids speed only (the
+                # bed's transport and dispersion scale with it; a stopped drum carries nothing):
+                # probed at each speed the segments start or end with (a ramp's ends)
+                speed = sched.inputs(tp, i).speed_factor
+                if speed not in probed:
+                    tk.probe(tp, y, sched, run, spread_only=bool(probed))
+                    probed.add(speed)
             te = times[(times >= a) & (times <= b)]
             ts, ys = _integrate(
                 tk.rhs, tk.jacobian, a, b, y, te, rtol, atol, (sched, run), newton_tol, bar
@@ -502,17 +624,22 @@ def _integrate(fun, jac, a, b, y0, t_eval, rtol, atol, args, newton_tol, bar):
     scipy's :class:`~scipy.integrate.BDF` stepped by hand (as ``solve_ivp`` does) to set a
     tighter Newton tolerance: a linear invariant (the energy and elements held plus those that
     crossed the boundary) is kept by the BDF formula only as well as its Newton iteration
-    converges.
+    converges. The last right-hand sides are kept: when the Newton iteration fails with an old
+    Jacobian, BDF evaluates a new one and starts again from the same predicted state, whose
+    right-hand side it already has.
     """
-    solver = BDF(
-        lambda t, y: fun(t, y, *args),
-        a,
-        y0,
-        b,
-        rtol=rtol,
-        atol=atol,
-        jac=lambda t, y: jac(t, y, *args),
-    )
+    recent = []  # the last right-hand sides evaluated, (t, y, f)
+
+    def rhs(t, y):
+        for t_k, y_k, f_k in recent:
+            if t_k == t and np.array_equal(y_k, y):
+                return f_k.copy()
+        f = fun(t, y, *args)
+        recent.insert(0, (t, y.copy(), f.copy()))
+        del recent[4:]  # a Newton iteration of scipy's BDF makes at most 4
+        return f
+
+    solver = BDF(rhs, a, y0, b, rtol=rtol, atol=atol, jac=lambda t, y: jac(t, y, *args))
     if newton_tol is not None:
         solver.newton_tol = newton_tol
     t_eval = np.asarray(t_eval, dtype=float)
@@ -564,17 +691,36 @@ def _collect(tk, sched, stamp, states, steady, wall_time, calls, transient):
     tb_faces = np.empty((n, tk.n + 1))
     tg_faces = np.empty((n, tk.n + 1))
     run = _Run()
+    flux = {}
     for k in range(n):
         x, tr, a = tk.unpack(Y[k])
         x_all[k], tracer[k], acc[k] = x, tr, a
         run.segment = stamp[k][1]
-        _, flux = tk.rhs(t[k], Y[k], sched, run, fluxes=True)
         u = sched.inputs(t[k], stamp[k][1])
+        if k not in flux:
+            # the boundary flows of the next output states of the same inputs, in one call
+            same = [k]
+            while (
+                len(same) < COLLECT_BATCH
+                and same[-1] + 1 < n
+                and stamp[same[-1] + 1][1] == stamp[k][1]
+                and sched.inputs(t[same[-1] + 1], stamp[k][1]) is u
+            ):
+                same.append(same[-1] + 1)
+            _, f = tk.rhs(t[k], Y[same].T, sched, run, fluxes=True)
+            for e, i in enumerate(same):
+                flux[i] = {
+                    key: ({s: v[e] for s, v in val.items()} if isinstance(val, dict) else val[e])
+                    for key, val in f.items()
+                    if key != "acc"
+                }
         tb_n, tg_n, _, _ = res.faces(x)
         tb_faces[k], tg_faces[k] = tb_n, tg_n
-        flux = {key: v for key, v in flux.items() if key != "acc"}
-        flux["tracer_outlet_kg_s"] = float(u.speed_factor * tr[-1] / tk.holdup.tau_bed[-1])
-        outlet.append(flux)
+        out = flux.pop(k)
+        out["bed_outlet"] = {s: float(v) for s, v in out["bed_outlet"].items()}
+        out["gas_outlet"] = {s: float(v) for s, v in out["gas_outlet"].items()}
+        out["tracer_outlet_kg_s"] = float(u.speed_factor * tr[-1] / tk.holdup.tau_bed[-1])
+        outlet.append(out)
         inv_e[k], inv_b[k], inv_g[k] = tk.inventory(x)
     return TransientSolution(
         name=res.kiln.name,

@@ -1,0 +1,672 @@
+r"""Steady solves of many kilns at once: a leading case axis through the one residual.
+
+A study solves one kiln at many operating points. Every point is its own Newton system, but
+the residual of one kiln costs about as much for one cell as for a hundred (numpy's call
+overhead), so the points are solved together: the unknowns of B kilns of one *model
+structure* (the same grid, sections, species, closures and wall: the same
+:class:`~rotarykiln.kiln.residual.KilnResidual` but for its inputs) form one array ``(B, n,
+nv)``, and one residual evaluation serves them all (their
+:class:`~rotarykiln.kiln.inputs.boundary.BoundaryInputs` stacked along the case axis: feed,
+gas inlet, heat released and its profile, rotation, solids speed and dispersion).
+
+The Newton iteration is :func:`~rotarykiln.kiln.steady.newton.newton_banded`'s, per case:
+the coloured banded finite-difference Jacobian (all cases' colours in one residual call), a
+banded solve per case, a backtracking line search per case (the cases still searching
+re-evaluated together), each case's own convergence test; converged and failed cases leave
+the batch. Each case's unknowns are scaled by its own inlet flows and its rows by its own
+reference heat, so the iterates are those of the case solved alone (to round-off).
+
+Cases start from the nearest solved case (in their scaled inputs), the first of each
+structure solved alone with the full continuation; a case whose Newton iteration fails in the
+batch is retried alone by :func:`~rotarykiln.kiln.steady.solve.solve_kiln` (continuation,
+grid sequencing) and, if that fails too, returns its own
+:class:`~rotarykiln.errors.ConvergenceError`, never the batch's.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import logging
+import math
+import warnings
+from collections.abc import Callable, Sequence
+
+import numpy as np
+from scipy.linalg import lapack
+
+from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln.inputs import Kiln
+from rotarykiln.kiln.inputs.boundary import BoundaryInputs
+from rotarykiln.kiln.residual import KilnResidual
+from rotarykiln.kiln.results.solution import KilnSolution
+from rotarykiln.kiln.steady.newton import SQUARED_FLOOR, STAGNATION_FACTOR
+from rotarykiln.kiln.steady.solve import finish_solution, newton_options, solve_kiln
+
+log = logging.getLogger(__name__)
+
+__all__ = ["solve_batch", "same_structure", "structure_groups", "batch_size_for", "BatchResidual"]
+
+#: Memory the batched Jacobian may take, bytes (the batch size is reduced to fit it).
+BATCH_MEMORY = 256 * 2**20
+#: Bytes per Jacobian entry ``(case, colour, cell, unknown)`` a residual evaluation needs at
+#: its peak (its temporaries). Measured with tracemalloc on a batch of 20 cases, 3 colours per
+#: unknown: 233 (Barr T4), 185 (Tscheng A16), 198 (limestone_fired); 400 leaves room for a
+#: kiln with more species or reactions.
+BYTES_PER_ENTRY = 400
+#: A kept Jacobian (chord iteration) is evaluated again after a step that reduced the
+#: residual by less than this factor.
+CHORD_RATE = 0.1
+#: Kiln fields that are the boundary inputs of a batch (they may differ between its cases).
+BOUNDARY_FIELDS = frozenset(
+    {
+        "name",
+        "measurements",
+        "feed.flows",
+        "feed.temperature",
+        "gas.flows",
+        "gas.temperature",
+        "firing.heat_release",
+        "firing.profile",
+        "firing.flame",
+        "drum.omega",
+        "bed.velocity",
+        "bed.dispersion",
+    }
+)
+
+
+def _equal(a, b, path: str = "") -> bool:
+    """Deep equality of two kiln input trees, but for the :data:`BOUNDARY_FIELDS`."""
+    if path in BOUNDARY_FIELDS or a is b:
+        return True
+    if dataclasses.is_dataclass(a) and not isinstance(a, type):
+        if type(a) is not type(b):
+            return False
+        return all(
+            _equal(getattr(a, f.name), getattr(b, f.name), f"{path}.{f.name}".lstrip("."))
+            for f in dataclasses.fields(a)
+        )
+    if isinstance(a, dict):
+        return (
+            isinstance(b, dict)
+            and a.keys() == b.keys()
+            and all(_equal(a[k], b[k], f"{path}.{k}") for k in a)
+        )
+    if isinstance(a, tuple | list):
+        return (
+            isinstance(b, tuple | list)
+            and len(a) == len(b)
+            and all(_equal(u, v, path) for u, v in zip(a, b, strict=True))
+        )
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.shape(a) == np.shape(b) and bool(np.array_equal(a, b, equal_nan=True))
+    if isinstance(a, float) and isinstance(b, float):
+        return a == b or (math.isnan(a) and math.isnan(b))
+    if callable(a) or callable(b):
+        return False  # two different functions: assume they differ
+    try:
+        return bool(a == b)
+    except (TypeError, ValueError):
+        return False
+
+
+def _dissociation(kiln: Kiln):
+    flame = kiln.firing.flame
+    return None if flame is None else getattr(flame, "dissociation", None)
+
+
+def same_structure(a: KilnResidual, b: KilnResidual) -> bool:
+    """Can the kilns of the residuals ``a`` and ``b`` share a batch? Their grids, sections,
+    species, closures and walls equal; only their boundary inputs (feed, feed temperature,
+    gas inlet, heat released and its profile, rotation, solids speed) differ.
+
+    Examples
+    --------
+    >>> from rotarykiln.kiln.inputs import Kiln
+    >>> from rotarykiln.materials.solids import load_solid
+    >>> def kiln(gas_temperature, length=2.44):
+    ...     return Kiln.inert(solid=load_solid("sand"), solids_flow=0.004,
+    ...         solids_inlet_temperature=298.15, gas_composition="O2:0.21, N2:0.79",
+    ...         gas_flow=0.007, gas_inlet_temperature=gas_temperature, length=length,
+    ...         radius=0.094, omega=0.157, fill=0.17)
+    >>> same_structure(KilnResidual(kiln(535.0), 20), KilnResidual(kiln(600.0), 20))
+    True
+    >>> same_structure(KilnResidual(kiln(535.0), 20), KilnResidual(kiln(535.0, 3.0), 20))
+    False
+    """
+    if a is b:
+        return True
+    attrs = ("n", "nv", "bed_names", "gas_names", "bed_var", "gas_var", "i_species")
+    if any(getattr(a, s) != getattr(b, s) for s in attrs):
+        return False
+    if not np.array_equal(a.sqrt_mask, b.sqrt_mask):
+        return False
+    ka, kb = a.kiln, b.kiln
+    if (ka.firing.heat_release > 0) != (kb.firing.heat_release > 0):
+        return False
+    if (ka.bed.dispersion > 0) != (kb.bed.dispersion > 0):
+        return False
+    if _dissociation(ka) != _dissociation(kb):
+        return False
+    return _equal(ka, kb)
+
+
+def structure_groups(residuals: Sequence[KilnResidual]) -> list[list[int]]:
+    """The cases (indices into ``residuals``) grouped by :func:`same_structure`, each group in
+    the order of the cases."""
+    groups: list[list[int]] = []
+    for i, r in enumerate(residuals):
+        for g in groups:
+            if same_structure(residuals[g[0]], r):
+                g.append(i)
+                break
+        else:
+            groups.append([i])
+    return groups
+
+
+def batch_size_for(res: KilnResidual, requested: int | None = None, memory=BATCH_MEMORY) -> int:
+    """The number of cases of ``res``'s structure solved together: ``requested`` (all the
+    cases when None), reduced, with a logged note, to what fits in ``memory`` bytes."""
+    if requested is not None and (int(requested) != requested or requested < 1):
+        raise InputError("batch", requested, "an integer >= 1 (cases solved together)")
+    per_case = 3 * res.nv * res.n * res.nv * BYTES_PER_ENTRY
+    fits = max(1, int(memory // per_case))
+    if requested is None:
+        return fits
+    if requested > fits:
+        log.info(
+            "batch of %d cases reduced to %d: %d cells x %d unknowns take about %.0f MB a case",
+            requested,
+            fits,
+            res.n,
+            res.nv,
+            per_case / 2**20,
+        )
+        return fits
+    return int(requested)
+
+
+class BatchResidual:
+    """The residual of B kilns of one structure (:func:`same_structure`), unknowns ``(B, C,
+    n, nv)`` (C perturbations of each case, 1 for the plain residual).
+
+    The first kiln's :class:`KilnResidual` evaluates every case at its own stacked
+    :class:`BoundaryInputs`; each case's unknowns are in its own scaling (species flows over
+    its own inlet flows) and its rows scaled by its own reference heat, as when solved alone.
+    """
+
+    def __init__(self, residuals: Sequence[KilnResidual]):
+        self.residuals = list(residuals)
+        self.base = base = self.residuals[0]
+        i0, nb, ng = base.i_species, base.nb, base.ng
+        self.inputs = BoundaryInputs.stack(
+            dataclasses.replace(
+                r.inputs,
+                bed_velocity=r.kiln.bed.velocity,
+                dispersion=r.kiln.bed.dispersion,
+                release_cells=r.grid.heat_release * 1.0,
+            )
+            for r in self.residuals
+        )
+        B = len(self.residuals)
+        # unknowns: case scaling -> the base's; rows: the base's -> the case's
+        self.x_factor = np.ones((B, base.nv))
+        self.row_factor = np.ones((B, base.nv))
+        for b, r in enumerate(self.residuals):
+            q = r.q_ref / base.q_ref
+            fb = r.bed_scale / base.bed_scale if base.bed_scale > 0 else 1.0
+            fg = r.gas_scale / base.gas_scale if base.gas_scale > 0 else 1.0
+            self.x_factor[b, i0 : i0 + nb] = np.where(base.sqrt_mask, np.sqrt(fb), fb)
+            self.x_factor[b, i0 + nb : i0 + nb + ng] = fg
+            self.row_factor[b, i0 : i0 + nb] = q / fb
+            self.row_factor[b, i0 + nb : i0 + nb + ng] = q / fg
+            if base.depth is not None:
+                self.row_factor[b, base.i_depth] = q
+        self.q_ref = np.array([r.q_ref for r in self.residuals])
+
+    def full(self, x, cases) -> list:
+        """Per case of ``cases``, what ``KilnResidual.evaluate(x[None], full=True)`` of its
+        own residual gives at its unknowns ``x`` (b, n, nv): all evaluated in one call."""
+        xf = self.x_factor[cases][:, None, :]
+        R, fl, prod, rate, faces = self.base.evaluate(
+            (x * xf)[:, None], full=True, inputs=self.inputs.take(cases)
+        )
+        R = R * self.row_factor[cases][:, None, None, :]
+        n = self.base.n
+        out = []
+        for b in range(len(cases)):
+            flux = {k: np.broadcast_to(v, R.shape[:2] + (n,))[b] for k, v in fl.items()}
+            out.append((R[b], flux, prod[b], rate[b], tuple(f[b] for f in faces)))
+        return out
+
+    def __call__(self, x, cases) -> np.ndarray:
+        """Residual of the cases ``cases`` (index array) at their unknowns ``x`` (b, C, n,
+        nv), W (energy rows) and scaled flows (species rows)."""
+        xf = self.x_factor[cases][:, None, None, :]
+        R = self.base.evaluate(x * xf, inputs=self.inputs.take(cases))
+        return R * self.row_factor[cases][:, None, None, :]
+
+
+@functools.lru_cache(maxsize=16)
+def _pattern(n: int, nv: int, local: tuple[bool, ...]):
+    """Colouring of the banded Jacobian of ``n`` cells of ``nv`` unknowns when the unknowns
+    ``local`` act on their own cell's rows only: 3 colours (cells ``j mod 3``) per other
+    unknown, one (every cell) per local one.
+
+    Returns ``colours``, ``perturbed`` (flat indices into the perturbed unknowns ``(colours,
+    n, nv)``, one per unknown ``(j, v)``), and for every band entry its place in the
+    flattened differences ``dR[colour, r, w]`` (``src``), in the flattened banded matrix
+    (``dst``, the layout of :func:`scipy.linalg.solve_banded` with half-bandwidth ``2 nv -
+    1``) and in the flattened steps ``h[j, v]`` (``step``).
+    """
+    local = np.asarray(local, dtype=bool)
+    first = np.cumsum([0] + [1 if loc else 3 for loc in local])[:-1]  # first colour of v
+    colours = int(sum(1 if loc else 3 for loc in local))
+    cells, var = np.arange(n), np.arange(nv)
+    colour = np.where(local[None, :], first[None, :], first[None, :] + cells[:, None] % 3)
+    perturbed = ((colour * n + cells[:, None]) * nv + var[None, :]).ravel()
+    size, bw = n * nv, 2 * nv - 1
+    src, dst, step = [], [], []
+    for off in (-1, 0, 1):
+        j = cells[max(0, -off) : n - max(0, off)][:, None, None]
+        for v in range(nv):
+            if off and local[v]:
+                continue  # a local unknown: no entry outside its own cell's rows
+            w = var[None, None, :]
+            c = colour[j[:, 0, 0], v][:, None, None]
+            src.append((((c * n) + (j + off)) * nv + w).ravel())
+            dst.append(((bw + off * nv + w - v) * size + (j * nv + v)).ravel())
+            step.append(np.broadcast_to(j * nv + v, (j.shape[0], 1, nv)).ravel())
+    return colours, perturbed, np.concatenate(src), np.concatenate(dst), np.concatenate(step)
+
+
+def local_unknowns(F, x: np.ndarray, case: int = 0, rel_step: float = 1e-7) -> np.ndarray:
+    """Which unknowns of a batched residual ``F`` act on their own cell's rows only (bool,
+    nv): those whose coloured finite differences (3 colours, cells ``j mod 3``) leave every
+    row of the cells of the other colours exactly unchanged at ``x`` (n, nv) of case
+    ``case`` (a wall temperature: its cell's exchange and conduction only)."""
+    n, nv = x.shape
+    none = tuple([False] * nv)
+    colours, perturbed, *_ = _pattern(n, nv, none)
+    h = rel_step * np.maximum(np.abs(x), 1.0)
+    X = np.broadcast_to(x, (colours, n, nv)).copy()
+    X.ravel()[perturbed] = (x + h).ravel()
+    dR = F(X[None], np.array([case]))[0] - F(x[None, None], np.array([case]))[0]
+    local = np.zeros(nv, dtype=bool)
+    other = np.arange(n)[None, :] % 3 != np.arange(3)[:, None]  # (colour c, cell k)
+    for v in range(nv):
+        d = dR[3 * v : 3 * v + 3]  # (c, k, w)
+        local[v] = not np.any(d[other])
+    return local
+
+
+def jacobian_factors(F, x, cases, R, *, local=None, step_floor=1.0, rel_step=1e-7) -> list:
+    """LU factors (LAPACK gbtrf; None where singular) of the banded finite-difference
+    Jacobians of the cases ``cases`` of a batched residual ``F`` at ``x`` (b, n, nv), their
+    residuals ``R`` (b, n, nv), all colours of all cases in one residual call: steps
+    ``rel_step max(|x|, step_floor)``, the unknowns ``local`` one colour each
+    (:func:`_pattern`)."""
+    b, n, nv = x.shape
+    loc = tuple(bool(v) for v in (np.zeros(nv, bool) if local is None else local))
+    colours, perturbed, src, dst, step_idx = _pattern(n, nv, loc)
+    floor = np.broadcast_to(np.asarray(step_floor, dtype=float), (nv,))
+    h = rel_step * np.maximum(np.abs(x), floor)
+    X = np.broadcast_to(x[:, None], (b, colours, n, nv)).copy()
+    X.reshape(b, -1)[:, perturbed] = (x + h).reshape(b, -1)
+    dR = F(X, cases) - R[:, None]
+    bw = 2 * nv - 1
+    ab = np.zeros((b, 2 * bw + 1, n * nv))
+    ab.reshape(b, -1)[:, dst] = dR.reshape(b, -1)[:, src] / h.reshape(b, -1)[:, step_idx]
+    return [_factor(ab[i], bw) for i in range(b)]
+
+
+def _factor(ab: np.ndarray, bw: int):
+    """LU of one banded matrix (``solve_banded`` layout), LAPACK gbtrf; None if singular."""
+    work = np.zeros((3 * bw + 1, ab.shape[1]))
+    work[bw:] = ab
+    lu, piv, info = lapack.dgbtrf(work, bw, bw, overwrite_ab=1)
+    return (lu, piv) if info == 0 else None
+
+
+def _solve(factors, rhs: np.ndarray, bw: int):
+    x, info = lapack.dgbtrs(factors[0], bw, bw, rhs, factors[1])
+    return x if info == 0 else None
+
+
+def newton_batch(
+    F: Callable,
+    x0: np.ndarray,
+    scale: np.ndarray,
+    *,
+    tol: float = 1e-10,
+    max_iter: int = 60,
+    max_step: float = 300.0,
+    lower: float = 160.0,
+    temperature_vars: int | None = None,
+    step_floor=1.0,
+    squared=None,
+    rel_step: float = 1e-7,
+    local=None,
+    start_factors=None,
+    **_,
+):
+    """Damped Newton on B block-tridiagonal systems at once: per case the iteration of
+    :func:`~rotarykiln.kiln.steady.newton.newton_banded` (its coloured finite-difference
+    Jacobian, step limit, line search, convergence and stagnation tests), each case's
+    Jacobian kept (its LU factors) while its iteration contracts fast.
+
+    A case's Jacobian is evaluated again when its last step reduced its residual by less
+    than :data:`CHORD_RATE`, or when its line search fails on a kept Jacobian; the
+    Jacobians of the cases that need one come from one residual call.
+
+    Parameters
+    ----------
+    F : callable
+        ``F(x, cases)``: residual of the cases ``cases`` (index array) at ``x`` (b, C, n,
+        nv), as :class:`BatchResidual`.
+    x0 : array (B, n, nv)
+        Initial guesses.
+    scale : array (B,)
+        Each case's residual is judged as ``max|F| / scale``.
+    tol, max_iter, max_step, lower, temperature_vars, step_floor, squared
+        As :func:`~rotarykiln.kiln.steady.newton.newton_banded` (``max_step``, ``lower``
+        in K).
+    local : array of bool (nv,), optional
+        Unknowns acting on their own cell's rows only (:func:`local_unknowns`): one colour
+        each instead of three.
+    start_factors : optional
+        LU factors of a Jacobian every case starts with (a neighbouring solution's), instead
+        of evaluating its own at its start.
+
+    Returns
+    -------
+    x : array (B, n, nv)
+        The last iterates.
+    iterations : array of int (B,)
+    residual : array (B,)
+        Each case's ``max|F| / scale`` at ``x`` (-).
+    converged : array of bool (B,)
+
+    Examples
+    --------
+    Two conducting chains with different end temperatures (K):
+
+    >>> def F(x, cases):
+    ...     hot = np.array([1000.0, 700.0])[cases].reshape(-1, 1, 1, 1)
+    ...     ends = np.ones(x.shape[:-2] + (1, 1))
+    ...     t = np.concatenate([300.0 * ends, x, hot * ends], axis=-2)
+    ...     return t[..., :-2, :] - 2.0 * t[..., 1:-1, :] + t[..., 2:, :]
+    >>> x, its, res, ok = newton_batch(F, np.full((2, 6, 1), 600.0), np.ones(2))
+    >>> x[:, :, 0].round(6).tolist(), ok.tolist()
+    ([[400.0, 500.0, 600.0, 700.0, 800.0, 900.0], [357.142857, 414.285714, 471.428571, 528.571429, 585.714286, 642.857143]], [True, True])
+
+    References
+    ----------
+    A.R. Curtis, M.J.D. Powell, J.K. Reid, J. Inst. Math. Appl. 13 (1974) 117-119;
+    J.E. Dennis, R.B. Schnabel, Numerical Methods for Unconstrained Optimization and
+    Nonlinear Equations, Prentice-Hall (1983), ch. 6; the chord (kept Jacobian) iteration:
+    C.T. Kelley, Iterative Methods for Linear and Nonlinear Equations, SIAM (1995), ch. 5.
+    """
+    x = np.array(x0, dtype=float)
+    B, n, nv = x.shape
+    nt = nv if temperature_vars is None else temperature_vars
+    sq = None if squared is None or not np.any(squared) else np.flatnonzero(squared)
+    jkw = dict(local=local, step_floor=step_floor, rel_step=rel_step)
+    bw = 2 * nv - 1
+    every = np.arange(B)
+    R = F(x[:, None], every)[:, 0]
+    norm = np.max(np.abs(R), axis=(1, 2)) / scale
+    iterations = np.zeros(B, dtype=int)
+    status = np.zeros(B, dtype=int)  # 0 running, 1 converged, -1 failed
+    factors: list = [start_factors] * B
+    fresh = np.full(B, start_factors is None)  # needs its Jacobian now
+    for it in range(1, max_iter + 1):
+        status[(status == 0) & (norm <= tol)] = 1
+        status[(status == 0) & ~np.isfinite(norm)] = -1
+        act = np.flatnonzero(status == 0)
+        if act.size == 0:
+            break
+        need = act[fresh[act]]
+        if need.size:
+            for c, f in zip(need, jacobian_factors(F, x[need], need, R[need], **jkw), strict=True):
+                factors[c] = f
+                if f is None:
+                    status[c] = -1
+            fresh[need] = False
+            act = np.flatnonzero(status == 0)
+            if act.size == 0:
+                continue
+        dx = np.empty((act.size, n, nv))
+        ok = np.ones(act.size, dtype=bool)
+        for i, c in enumerate(act):
+            d = _solve(factors[c], -R[c].reshape(-1, 1), bw)
+            ok[i] = d is not None and bool(np.all(np.isfinite(d)))
+            if ok[i]:
+                dx[i] = d.reshape(n, nv)
+        kept = ~np.isin(act, need)
+        fresh[act[~ok & kept]] = True  # a kept Jacobian that fails: the case's own, then
+        status[act[~ok & ~kept]] = -1
+        act, dx = act[ok], dx[ok]
+        if act.size == 0:
+            continue
+        xa = x[act]
+        big = np.max(np.abs(dx[:, :, :nt]), axis=(1, 2)) if nt else np.zeros(act.size)
+        lam = np.where(big > 0, np.minimum(1.0, max_step / np.where(big > 0, big, 1.0)), 1.0)
+        xt_all = np.empty_like(xa)
+        Rt_all = np.empty((act.size, n, nv))
+        nt_norm = np.full(act.size, np.inf)
+        accepted = np.zeros(act.size, dtype=bool)
+        searching = np.arange(act.size)
+        for _ in range(30):
+            s_ = searching
+            lm = lam[s_][:, None, None]
+            xt = xa[s_] + lm * dx[s_]
+            if sq is not None:
+                s = xa[s_][:, :, sq]
+                q = np.maximum(s * s + lm * 2.0 * s * dx[s_][:, :, sq], SQUARED_FLOOR * s * s)
+                xt[:, :, sq] = np.copysign(np.sqrt(q), s)
+            xt[:, :, :nt] = np.maximum(xt[:, :, :nt], lower)
+            Rt = F(xt[:, None], act[s_])[:, 0]
+            tn = np.max(np.abs(Rt), axis=(1, 2)) / scale[act[s_]]
+            xt_all[s_], Rt_all[s_], nt_norm[s_] = xt, Rt, tn
+            good = np.isfinite(tn) & ((tn < (1 - 1e-4 * lam[s_]) * norm[act[s_]]) | (tn <= tol))
+            accepted[s_[good]] = True
+            searching = s_[~good]
+            if searching.size == 0:
+                break
+            lam[searching] *= 0.5
+        old = norm[act].copy()
+        own = np.isin(act, need)  # Jacobians evaluated at these very iterates
+        move = accepted.copy()
+        for i in np.flatnonzero(~accepted):
+            c = act[i]
+            if not own[i]:
+                fresh[c] = True  # a kept Jacobian: evaluate the case's own and try again
+            elif norm[c] <= STAGNATION_FACTOR * tol:
+                status[c] = 1  # round-off reached just above the tolerance
+            elif not np.isfinite(nt_norm[i]) or nt_norm[i] > 10 * norm[c]:
+                status[c] = -1
+            else:
+                move[i] = True  # the smallest step, as newton_banded takes it
+        moved = act[move]
+        x[moved], R[moved], norm[moved] = xt_all[move], Rt_all[move], nt_norm[move]
+        iterations[moved] = it
+        slow = moved[norm[moved] > CHORD_RATE * old[move]]
+        fresh[slow] = True
+    status[(status == 0) & (norm <= tol)] = 1
+    return x, iterations, norm, status == 1
+
+
+def _scaled_inputs(res: KilnResidual) -> np.ndarray:
+    """The inputs of a case as one vector, each entry over a typical size, for distances."""
+    u = res.inputs
+    v = [
+        np.atleast_1d(u.feed) / max(res.bed_scale, 1e-30),
+        [u.feed_temperature / 1000.0],
+        np.atleast_1d(u.gas) / max(res.gas_scale, 1e-30) if res.gas_scale > 0 else [0.0],
+        [res.gas_scale],
+        [u.gas_temperature / 1000.0, u.omega, res.kiln.bed.velocity * 1e3],
+        [res.kiln.firing.heat_release / max(res.q_ref, 1.0)],
+    ]
+    return np.concatenate([np.asarray(a, float).ravel() for a in v])
+
+
+def _physical(res: KilnResidual, x: np.ndarray) -> np.ndarray:
+    """Unknowns of ``res`` with its species as flows (kg/s), for a start of another case."""
+    i0, nb, ng = res.i_species, res.nb, res.ng
+    p = x.copy()
+    xb = x[:, i0 : i0 + nb]
+    p[:, i0 : i0 + nb] = np.where(res.sqrt_mask, xb * xb, xb) * res.bed_scale
+    p[:, i0 + nb : i0 + nb + ng] *= res.gas_scale
+    return p
+
+
+def _unknowns(res: KilnResidual, p: np.ndarray) -> np.ndarray:
+    """The inverse of :func:`_physical`: the unknowns of ``res`` from physical ones."""
+    i0, nb, ng = res.i_species, res.nb, res.ng
+    x = p.copy()
+    qb = np.maximum(p[:, i0 : i0 + nb], 0.0) / res.bed_scale
+    x[:, i0 : i0 + nb] = np.where(res.sqrt_mask, np.sqrt(qb), qb)
+    if ng:
+        x[:, i0 + nb : i0 + nb + ng] = p[:, i0 + nb : i0 + nb + ng] / res.gas_scale
+    return x
+
+
+def solve_batch(
+    kilns: Sequence[Kiln],
+    n_cells: int = 100,
+    *,
+    tol: float = 1e-11,
+    max_iter: int = 60,
+    batch: int | None = None,
+    check_balances: bool = True,
+    warnings_out: list | None = None,
+) -> list[KilnSolution | ConvergenceError]:
+    """Solve the steady balances of many kilns, those of one model structure together.
+
+    Parameters
+    ----------
+    kilns : sequence of Kiln
+        The kilns (operating points of a study, or anything: kilns of different structures
+        are split into groups solved one after the other).
+    n_cells : int
+        Number of equal cells of every kiln (>= 4).
+    tol, max_iter, check_balances
+        As :func:`~rotarykiln.kiln.steady.solve.solve_kiln`.
+    batch : int, optional
+        Largest number of cases solved together (default: as many as fit in
+        :data:`BATCH_MEMORY`; a larger request is reduced to that, with a logged note).
+    warnings_out : list, optional
+        Filled with one list per kiln of the warnings of its own solve (its closures' ranges
+        checked on its solution), instead of letting them propagate.
+
+    Returns
+    -------
+    list
+        Per kiln, in order, its :class:`KilnSolution` (temperatures in K, flows in kg/s,
+        heat flows in W), or the :class:`~rotarykiln.errors.ConvergenceError` of its own
+        solve alone.
+
+    Examples
+    --------
+    >>> from rotarykiln.kiln.inputs import Kiln
+    >>> from rotarykiln.materials.solids import load_solid
+    >>> kilns = [Kiln.inert(solid=load_solid("sand"), solids_flow=0.004,
+    ...     solids_inlet_temperature=298.15, gas_composition="O2:0.21, N2:0.79",
+    ...     gas_flow=0.007, gas_inlet_temperature=t, length=2.44, radius=0.094,
+    ...     omega=0.157, fill=0.17) for t in (500.0, 535.0, 570.0)]
+    >>> [round(s.bed_outlet_temperature, 3) for s in solve_batch(kilns, 20)] == [
+    ...     round(solve_kiln(k, 20).bed_outlet_temperature, 3) for k in kilns]
+    True
+
+    References
+    ----------
+    The Newton iteration: :func:`~rotarykiln.kiln.steady.newton.newton_banded`; batching
+    over operating points: docs/studies.md.
+    """
+    if int(n_cells) != n_cells or n_cells < 4:
+        raise InputError("solver.cells", n_cells, "an integer >= 4")
+    n_cells = int(n_cells)
+    residuals = [KilnResidual(k, n_cells) for k in kilns]
+    out: list = [None] * len(residuals)
+    caught: list[list] = [[] for _ in residuals]
+    opts = dict(tol=tol, max_iter=max_iter, check_balances=check_balances)
+    for group in structure_groups(residuals):
+        size = batch_size_for(residuals[group[0]], batch)
+        _solve_group(residuals, group, size, out, caught, opts)
+    if warnings_out is not None:
+        warnings_out[:] = caught
+    else:
+        for w in (w for ws in caught for w in ws):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return out
+
+
+def _recorded(caught: list, run: Callable):
+    """``run()``, its warnings appended to ``caught``; a ConvergenceError returned."""
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        try:
+            result = run()
+        except ConvergenceError as err:
+            result = err
+    caught.extend(w)
+    return result
+
+
+def _alone(res: KilnResidual, caught: list, opts: dict):
+    return _recorded(caught, lambda: solve_kiln(res.kiln, res.n, **opts))
+
+
+def _solve_group(residuals, group, size, out, caught, opts):
+    """Solve the cases ``group`` of one structure into ``out`` (their warnings into
+    ``caught``): the first alone, the others in batches of ``size`` from the nearest solved
+    case, a case that fails there alone."""
+    first = group[0]
+    out[first] = _alone(residuals[first], caught[first], opts)
+    if isinstance(out[first], ConvergenceError):
+        for i in group[1:]:  # no start to share: each case alone
+            out[i] = _alone(residuals[i], caught[i], opts)
+        return
+    solved = [first]
+    anchor = BatchResidual([residuals[first]])
+    x_first = out[first].fluxes["x"][None]
+    kw0 = newton_options(residuals[first], tol=opts["tol"], max_iter=opts["max_iter"])
+    local = local_unknowns(anchor, x_first[0])
+    R_first = anchor(x_first[:, None], np.array([0]))[:, 0]
+    start_lu = jacobian_factors(
+        anchor, x_first, np.array([0]), R_first, local=local, step_floor=kw0["step_floor"]
+    )[0]
+    key = {i: _scaled_inputs(residuals[i]) for i in group}
+    rest = group[1:]
+    for first_case in range(0, len(rest), size):
+        chunk = rest[first_case : first_case + size]
+        starts = []
+        for i in chunk:
+            near = min(solved, key=lambda j, i=i: float(np.sum((key[j] - key[i]) ** 2)))
+            p = _physical(residuals[near], out[near].fluxes["x"])
+            starts.append(_unknowns(residuals[i], p))
+        rs = [residuals[i] for i in chunk]
+        F = BatchResidual(rs)
+        kw = newton_options(rs[0], tol=opts["tol"], max_iter=opts["max_iter"])
+        x, its, _, ok = newton_batch(
+            F, np.stack(starts), F.q_ref, local=local, start_factors=start_lu, **kw
+        )
+        done = np.flatnonzero(ok)
+        evaluated = dict(zip(done, F.full(x[done], done), strict=True)) if done.size else {}
+        for b, i in enumerate(chunk):
+            if ok[b]:
+                res = residuals[i]
+                out[i] = _recorded(
+                    caught[i],
+                    lambda res=res, xb=x[b], n_it=int(its[b]), ev=evaluated[b]: finish_solution(
+                        res, xb, n_it, check_balances=opts["check_balances"], evaluated=ev
+                    ),
+                )
+            if not ok[b] or isinstance(out[i], ConvergenceError):
+                caught[i].clear()
+                out[i] = _alone(residuals[i], caught[i], opts)
+            if not isinstance(out[i], ConvergenceError):
+                solved.append(i)

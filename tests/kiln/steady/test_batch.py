@@ -1,0 +1,153 @@
+"""Batched steady solves (issue 25): the same answers as one-at-a-time solves, a failing case
+alone, structures split, batch sizes checked."""
+
+import warnings
+
+import numpy as np
+import pytest
+
+from rotarykiln.case import load_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.residual import KilnResidual
+from rotarykiln.kiln.steady.batch import (
+    batch_size_for,
+    same_structure,
+    solve_batch,
+    structure_groups,
+)
+from rotarykiln.kiln.steady.solve import solve_kiln
+
+#: Every built-in steady kiln case (Tscheng's 44 runs by one of them: the same model).
+KILN_CASES = [
+    "tscheng_A16",
+    "barr_T2",
+    "barr_T3",
+    "barr_T4",
+    "barr_T6",
+    "barr_T9",
+    "ubc_pilot_flame",
+    "limestone_calcination",
+    "limestone_fired",
+    "charcoal_activation",
+    "charcoal_activation_kramers",
+    "rotary_pyrolysis",
+]
+#: Both paths solved to this tolerance: each then resolves the solution to far below the
+#: 1e-8 K compared (at the default 1e-11 each is ~3e-8 K from the exact root, so two of them
+#: from different starts may differ by that much).
+TOL = 1e-13
+#: The calcining kiln's residual stops at ~2e-12 (round-off in its stiff rates, which moves with
+#: the numpy/scipy build): both paths to 1e-12 there, where they agree to ~1e-9 K.
+TOL_OF = {"limestone_calcination": 1e-12}
+
+
+def operating_points(kiln, n, seed):
+    """``n`` kilns around ``kiln``: feed and gas flows +-15 %, inlet temperatures, rotation
+    +-15 %, heat released +-10 %."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for _ in range(n):
+        f = rng.uniform(0.85, 1.15, 4)
+        out.append(
+            kiln.replace(
+                feed__flows={s: v * f[0] for s, v in kiln.feed.flows.items()},
+                feed__temperature=kiln.feed.temperature + rng.uniform(0.0, 20.0),
+                gas__flows={s: v * f[1] for s, v in kiln.gas.flows.items()},
+                gas__temperature=kiln.gas.temperature * rng.uniform(0.97, 1.03),
+                drum__omega=kiln.drum.omega * f[2],
+                firing__heat_release=kiln.firing.heat_release * (0.9 + 0.2 * (f[3] - 0.85) / 0.3),
+            )
+        )
+    return out
+
+
+def _same_solution(a, b, atol=1e-8):
+    for name in ("t_bed", "t_gas", "t_wall"):
+        np.testing.assert_allclose(getattr(a, name), getattr(b, name), rtol=0, atol=atol)
+    for s in a.bed_flows:
+        scale = max(float(np.max(a.bed_flows[s])), 1e-30)
+        np.testing.assert_allclose(a.bed_flows[s], b.bed_flows[s], rtol=0, atol=1e-9 * scale)
+
+
+@pytest.mark.parametrize("name", KILN_CASES)
+def test_batched_and_single_solves_agree_on_every_builtin_kiln(name):
+    kiln, cells = kiln_from_case(load_case(builtin_case_path(name)))
+    # the calcining kiln's single solves need its continuation at every point: fewer points
+    kilns = [kiln, *operating_points(kiln, 2 if name == "limestone_calcination" else 5, len(name))]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tol = TOL_OF.get(name, TOL)
+        batched = solve_batch(kilns, cells, tol=tol)
+        for k, sol in zip(kilns, batched, strict=True):
+            single = solve_kiln(k, cells, tol=tol)
+            assert not isinstance(sol, ConvergenceError), sol
+            _same_solution(sol, single)
+            assert abs(sol.energy_closure) <= 1e-6
+            assert max(sol.element_closure.values()) <= 1e-8
+
+
+def test_a_batch_with_an_impossible_case_returns_every_other_case():
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    points = operating_points(kiln, 4, seed=3)
+    # burnt gas entering at 9000 K: beyond the gas tables, no physical steady state
+    impossible = kiln.replace(gas__temperature=9000.0)
+    kilns = [points[0], impossible, *points[1:]]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        out = solve_batch(kilns, cells)
+    assert isinstance(out[1], ConvergenceError)
+    with pytest.raises(ConvergenceError) as alone:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            solve_kiln(impossible, cells)
+    assert str(out[1]) == str(alone.value)  # its own failure, not the batch's
+    for k, sol in zip(kilns[:1] + kilns[2:], out[:1] + out[2:], strict=True):
+        assert not isinstance(sol, ConvergenceError)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            _same_solution(sol, solve_kiln(k, cells), atol=1e-6)
+
+
+def test_kilns_of_different_structures_are_split_not_refused():
+    tscheng, n_t = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    barr, n_b = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    longer = tscheng.replace(drum__length=3.0)
+    kilns = [tscheng, barr, longer, operating_points(tscheng, 1, seed=1)[0]]
+    residuals = [KilnResidual(k, 40) for k in kilns]
+    assert structure_groups(residuals) == [[0, 3], [1], [2]]
+    assert same_structure(residuals[0], residuals[3])
+    assert not same_structure(residuals[0], residuals[2])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        out = solve_batch(kilns, 40)
+        for k, sol in zip(kilns, out, strict=True):
+            _same_solution(sol, solve_kiln(k, 40), atol=1e-6)
+
+
+def test_batch_sizes_are_checked_and_reduced_to_fit_memory(caplog):
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    res = KilnResidual(kiln, cells)
+    for bad in (0, -3, 2.5):
+        with pytest.raises(InputError, match="batch"):
+            batch_size_for(res, bad)
+    fits = batch_size_for(res)
+    assert fits >= 1
+    with caplog.at_level("INFO", logger="rotarykiln.kiln.steady.batch"):
+        assert batch_size_for(res, 10 * fits) == fits
+    assert "reduced" in caplog.text
+    assert batch_size_for(res, 1) == 1
+    tiny = batch_size_for(res, 100, memory=1)
+    assert tiny == 1  # never below one case
+
+
+def test_warnings_are_kept_per_case():
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    kilns = [kiln, *operating_points(kiln, 2, seed=5)]
+    caught: list = []
+    solve_batch(kilns, cells, warnings_out=caught)
+    assert len(caught) == 3
+    # Barr's 2.5 mm sand lies outside the particle sizes of Li et al.'s fit: each case says so
+    for ws in caught:
+        assert any("Li et al." in str(w.message) for w in ws)
