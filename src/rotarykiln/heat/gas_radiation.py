@@ -80,6 +80,8 @@ _JOHANSSON_C = (
     ((0.142, -0.0831, 0.0148), (0.348, -0.294, 0.0662), (-0.122, 0.118, -0.0295)),
     ((0.0798, -0.0370, 0.0023), (0.0866, -0.106, 0.0305), (-0.0127, 0.0169, -0.0051)),
 )
+_JOHANSSON_K_ARRAY = np.array(_JOHANSSON_K)
+_JOHANSSON_C_ARRAY = np.array(_JOHANSSON_C)
 
 
 def smith_wsgg_emissivity(temperature, pressure_path_length, case="pw/pc=2", *, check=True):
@@ -214,14 +216,19 @@ def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=T
     mr = np.clip(mr_raw, 0.125, 2.0)
     tr = T / 1200.0
     pl = ptot * np.asarray(path_length, dtype=float)
-    eps = np.zeros(np.broadcast(T, pl, mr).shape)
-    for (k1, k2), cij in zip(_JOHANSSON_K, _JOHANSSON_C, strict=True):
-        kappa = k1 + k2 * mr
-        a = 0.0
-        for j in range(3):
-            coeff = cij[0][j] + cij[1][j] * mr + cij[2][j] * mr**2
-            a = a + coeff * tr**j
-        eps = eps + a * (1.0 - np.exp(-kappa * pl))
+    shape = np.broadcast(T, pl, mr).shape
+    # the four grey gases on a leading axis (the same operations per element as gas by gas)
+    grey = (4,) + (1,) * len(shape)
+    k = _JOHANSSON_K_ARRAY.reshape((4, 2) + (1,) * len(shape))
+    c = _JOHANSSON_C_ARRAY.reshape((4, 3, 3) + (1,) * len(shape))
+    kappa = k[:, 0] + k[:, 1] * mr
+    mr2 = mr**2
+    coeff = c[:, 0] + c[:, 1] * mr + c[:, 2] * mr2  # (4, j, ...)
+    a = coeff[:, 0] + coeff[:, 1] * tr + coeff[:, 2] * tr**2
+    terms = np.broadcast_to(a * (1.0 - np.exp(-kappa * pl)), grey[:1] + shape)
+    eps = terms[0] + terms[1]
+    eps += terms[2]
+    eps += terms[3]
     return eps
 
 

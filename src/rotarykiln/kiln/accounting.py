@@ -19,7 +19,17 @@ __all__ = ["energy_sheet", "exhaust_state", "global_balance"]
 
 
 def global_balance(
-    res, fluxes, production, tb_n, tg_n, qb, qg, inputs=None, *, bed_enthalpy=None
+    res,
+    fluxes,
+    production,
+    tb_n,
+    tg_n,
+    qb,
+    qg,
+    inputs=None,
+    *,
+    bed_enthalpy=None,
+    reaction_from_sources=False,
 ) -> dict:
     r"""The kiln's global energy balance of a state, W (arrays over the leading batch axis).
 
@@ -51,6 +61,12 @@ def global_balance(
         default the flows of ``qb`` at the feed face, speed factor 1.
     bed_enthalpy : array (..., n + 1, n_bed), J/kg, optional
         The bed species' enthalpies at ``tb_n`` when the caller has them.
+    reaction_from_sources : bool
+        Take :math:`Q_{reaction}` from the residual's own chemistry sources in ``fluxes``
+        (``-(q_bed_chemistry + q_gas_chemistry - q_source_gas)``, the same integral with the
+        enthalpies the residual priced them at) instead of pricing ``production`` again: for
+        a caller evaluating the balance at every step (the transient's quadrature); the
+        steady solve's check prices it independently.
 
     Returns
     -------
@@ -96,12 +112,18 @@ def global_balance(
     def total(key):
         return np.broadcast_to(fluxes.get(key, 0.0), batch + (n,)).sum(-1) * dz
 
-    tbm = fluxes["t_bed_mean"]
-    h_all = np.zeros_like(production)
-    h_all[..., res.bed_idx] = res.bed_enthalpy(tbm)
-    h_all[..., res.gas_idx] = res.mixture.species_enthalpy(tbm)
-    absorbed = np.broadcast_to(fluxes["q_reaction_absorbed"], batch + (n,))
-    reaction = (absorbed - (production * h_all).sum(-1)).sum(-1) * dz
+    if reaction_from_sources:
+        chemistry = fluxes["q_bed_chemistry"] + fluxes["q_gas_chemistry"]
+        if res.kiln.firing.heat_release > 0:  # the release is part of the gas's source
+            chemistry = chemistry - fluxes["q_source_gas"]
+        reaction = -np.broadcast_to(chemistry, batch + (n,)).sum(-1) * dz
+    else:
+        tbm = fluxes["t_bed_mean"]
+        h_all = np.zeros_like(production)
+        h_all[..., res.bed_idx] = res.bed_enthalpy(tbm)
+        h_all[..., res.gas_idx] = res.mixture.species_enthalpy(tbm)
+        absorbed = np.broadcast_to(fluxes["q_reaction_absorbed"], batch + (n,))
+        reaction = (absorbed - (production * h_all).sum(-1)).sum(-1) * dz
     out = {
         "solids_in": solids_in,
         "solids_out": solids_out,

@@ -100,6 +100,8 @@ def fit_pieces(thermo, x=None):
     True
     """
     if x is None:
+        if hasattr(thermo, "grid_pieces"):  # already cubic pieces on T_GRID (dissociation)
+            return thermo.grid_pieces()
         return _fit_on_grid(thermo)
     x = np.asarray(x, dtype=float)
     m = len(x) - 1

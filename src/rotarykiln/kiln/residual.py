@@ -469,16 +469,19 @@ class KilnResidual:
         # what the bed releases (bed reactions) enters the gas at the bed temperature; a
         # freeboard reaction releases -dH_298 r into the gas, whose sensible tables do the rest
         w_released = w_gas - prod_gp[..., self.gas_idx]
-        hb_cell = self.bed_enthalpy(tb)
-        hg_at_bed = self.mixture.species_enthalpy(tb)
+        # the enthalpies at the faces and at the cells' bed temperature, each in one call
+        m = tbn.shape[-1]
+        hb_both = self.bed_enthalpy(np.concatenate([tbn, tb], -1))
+        hb_nodes, hb_cell = hb_both[..., :m, :], hb_both[..., m:, :]
+        hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, tb], -1))
+        hg_nodes, hg_at_bed = hg_both[..., :m, :], hg_both[..., m:, :]
         s_bed = -heat + (w_bed * hb_cell).sum(-1)
         s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
         release = self.release(scales, u)
         if self.kiln.firing.heat_release > 0:
             s_gas = s_gas + release
-        hb_nodes = self.bed_enthalpy(tbn)
         Hb = (qb * hb_nodes).sum(-1)
-        Hg = (qg * self.mixture.species_enthalpy(tgn)).sum(-1)
+        Hg = (qg * hg_nodes).sum(-1)
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
         disp_species = None
         if self.kiln.bed.dispersion > 0:

@@ -248,6 +248,21 @@ class DissociationHeat:
         inside = (T >= T_GRID[0]) & (T <= T_GRID[-1])
         return np.where(inside, self.spline(T, 1), 0.0)
 
+    def grid_pieces(self):
+        """The cubic c_p and quartic h pieces of :func:`~rotarykiln.kiln.gas_mixture.fit_pieces`
+        on :data:`T_GRID` (shapes (4, m), (5, m), PPoly layout), read off the spline itself:
+        its pieces are those polynomials already (h the spline with a zero quartic term, c_p
+        its derivative), which a least-squares fit would only recover to round-off."""
+        c = self.spline.c  # (4, m): a s^3 + b s^2 + c s + d on each interval
+        if not np.array_equal(self.spline.x, T_GRID) or c.shape[0] != 4:
+            raise ValueError("the dissociation spline is not a cubic on the T_GRID breakpoints")
+        m = c.shape[1]
+        cp = np.zeros((4, m))
+        cp[1:] = c[:3] * np.array([3.0, 2.0, 1.0])[:, None]
+        h = np.zeros((5, m))
+        h[1:] = c
+        return cp, h
+
 
 @lru_cache(maxsize=256)
 def _heat(composition: tuple[tuple[str, float], ...], pressure: float) -> DissociationHeat:

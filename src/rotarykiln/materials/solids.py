@@ -229,10 +229,11 @@ class Solid:
         return (segs, tuple(bounds), tuple(o - float(h_ref) for o in offsets))
 
     @staticmethod
-    def _molar(T, pieces, latent):
-        """Molar c_p (J/(mol K)) and h (J/mol) on an array ``T`` (K): one pass per piece."""
+    def _molar(T, pieces, latent, with_cp=True):
+        """Molar c_p (J/(mol K)) and h (J/mol) on an array ``T`` (K): one pass per piece.
+        Without ``with_cp`` only h is computed (c_p returned as None)."""
         segs, bounds, offsets = pieces
-        cp = segs[0].cp_molar(T)
+        cp = segs[0].cp_molar(T) if with_cp else None
         h = segs[0].antiderivative(T) + offsets[0]
         if not bounds or T.size == 0:
             return cp, h
@@ -240,21 +241,23 @@ class Solid:
         for k, (tb, _, w) in enumerate(bounds):
             if not t_max >= tb - 0.5 * w:
                 break
-            cp_b = segs[k + 1].cp_molar(T)
+            cp_b = segs[k + 1].cp_molar(T) if with_cp else None
             h_b = segs[k + 1].antiderivative(T) + offsets[k + 1]
-            above = T >= tb
             if w > 0.0:
                 x = np.clip((T - (tb - 0.5 * w)) / w, 0.0, 1.0)
                 s = x * x * (3.0 - 2.0 * x)
                 dh = h_b - h
-                cp_mixed = cp + s * (cp_b - cp)  # the two phases' c_p by phase fraction
-                if latent:
-                    cp = cp_mixed + (6.0 / w) * x * (1.0 - x) * dh
-                else:
-                    cp = cp_mixed  # continuous: a jump here made the kiln residual jump
+                if with_cp:
+                    cp_mixed = cp + s * (cp_b - cp)  # the two phases' c_p by phase fraction
+                    if latent:
+                        cp = cp_mixed + (6.0 / w) * x * (1.0 - x) * dh
+                    else:
+                        cp = cp_mixed  # continuous: a jump here made the kiln residual jump
                 h = h + s * dh
             else:
-                cp = np.where(above, cp_b, cp)
+                above = T >= tb
+                if with_cp:
+                    cp = np.where(above, cp_b, cp)
                 h = np.where(above, h_b, h)
         return cp, h
 
@@ -393,7 +396,7 @@ class Solid:
             self.check_range(T)
         if self._pieces is None:
             return self.cp_const * (T - T0)
-        _, h = self._molar(T, self._pieces, True)
+        _, h = self._molar(T, self._pieces, True, with_cp=False)
         return h / self.molar_mass
 
 

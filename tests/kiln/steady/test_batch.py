@@ -126,6 +126,33 @@ def test_kilns_of_different_structures_are_split_not_refused():
             _same_solution(sol, solve_kiln(k, 40), atol=1e-6)
 
 
+def test_other_fuel_flows_start_from_their_neighbour_and_agree_with_single_solves(monkeypatch):
+    """Each fuel flow burns to another gas (its own dissociation heat: its own structure), so
+    no two of these kilns share a batch; each but the first starts by Newton from the nearest
+    solved one (same unknowns), without the continuation, and lands on its own root."""
+    from rotarykiln.case import case_with
+    from rotarykiln.kiln.steady import batch as B
+
+    base = load_case(builtin_case_path("barr_T4"))
+    kilns = [
+        kiln_from_case(case_with(base, {"burner.fuel_flow": f"{q} L/s"}))[0]
+        for q in (1.9, 1.95, 2.0, 2.05)
+    ]
+    cells = kiln_from_case(base)[1]
+    residuals = [KilnResidual(k, cells) for k in kilns]
+    assert structure_groups(residuals) == [[0], [1], [2], [3]]
+    assert all(B.same_layout(residuals[0], r) for r in residuals)
+    alone, original = [], B._alone
+    monkeypatch.setattr(B, "_alone", lambda res, *a: alone.append(res) or original(res, *a))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        out = solve_batch(kilns, cells, tol=TOL)
+        assert len(alone) == 1  # only the first, with the continuation
+        for k, sol in zip(kilns, out, strict=True):
+            _same_solution(sol, solve_kiln(k, cells, tol=TOL))
+            assert abs(sol.energy_closure) <= 1e-6
+
+
 def test_batch_sizes_are_checked_and_reduced_to_fit_memory(caplog):
     kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
     res = KilnResidual(kiln, cells)

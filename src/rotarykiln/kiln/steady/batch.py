@@ -593,9 +593,11 @@ def solve_batch(
     out: list = [None] * len(residuals)
     caught: list[list] = [[] for _ in residuals]
     opts = dict(tol=tol, max_iter=max_iter, check_balances=check_balances)
+    solved: list[int] = []
+    opts["local"] = {}  # the local unknowns of each layout, found once
     for group in structure_groups(residuals):
         size = batch_size_for(residuals[group[0]], batch)
-        _solve_group(residuals, group, size, out, caught, opts)
+        _solve_group(residuals, group, size, out, caught, opts, solved)
     if warnings_out is not None:
         warnings_out[:] = caught
     else:
@@ -617,30 +619,94 @@ def _recorded(caught: list, run: Callable):
 
 
 def _alone(res: KilnResidual, caught: list, opts: dict):
-    return _recorded(caught, lambda: solve_kiln(res.kiln, res.n, **opts))
+    kw = {k: opts[k] for k in ("tol", "max_iter", "check_balances")}
+    return _recorded(caught, lambda: solve_kiln(res.kiln, res.n, **kw))
 
 
-def _solve_group(residuals, group, size, out, caught, opts):
+def _layout(res: KilnResidual) -> tuple:
+    return (res.n, res.nv, res.i_species, res.bed_var, res.gas_var, res.depth is None)
+
+
+def same_layout(a: KilnResidual, b: KilnResidual) -> bool:
+    """Whether the unknowns of ``a`` and ``b`` mean the same things cell by cell (cells,
+    wall nodes, species, bed depth), so that a solution of one is a start for the other
+    even when their models differ (another fuel flow: another burnt gas)."""
+    return _layout(a) == _layout(b) and np.array_equal(a.sqrt_mask, b.sqrt_mask)
+
+
+def _from_neighbour(residuals, i, solved, out, caught, opts):
+    """The solution of case ``i`` by Newton from the nearest solved case of the same layout
+    (:func:`same_layout`), or None when there is none or that Newton fails (the case is
+    then solved alone, with the continuation)."""
+    res = residuals[i]
+    near = [j for j in solved if same_layout(residuals[j], res)]
+    if not near:
+        return None
+    key = _scaled_inputs(res)
+    sizes = [_scaled_inputs(residuals[j]) for j in near]
+    j = min(
+        range(len(near)),
+        key=lambda m: (
+            float(np.sum((sizes[m] - key) ** 2)) if sizes[m].shape == key.shape else np.inf
+        ),
+    )
+    start = _unknowns(res, _physical(residuals[near[j]], out[near[j]].fluxes["x"]))
+    F = BatchResidual([res])
+    kw = newton_options(res, tol=opts["tol"], max_iter=opts["max_iter"])
+    layout = _layout(res)
+    if layout not in opts["local"]:  # found once per layout, on the neighbour's solution
+        neighbour = residuals[near[j]]
+        opts["local"][layout] = local_unknowns(BatchResidual([neighbour]), out[near[j]].fluxes["x"])
+    x, its, _, ok = newton_batch(F, start[None], F.q_ref, local=opts["local"][layout], **kw)
+    if not ok[0]:
+        return None
+    evaluated = F.full(x, np.array([0]))[0]
+    result = _recorded(
+        caught,
+        lambda: finish_solution(
+            res, x[0], int(its[0]), check_balances=opts["check_balances"], evaluated=evaluated
+        ),
+    )
+    if isinstance(result, ConvergenceError):
+        caught.clear()
+        return None
+    return result
+
+
+def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     """Solve the cases ``group`` of one structure into ``out`` (their warnings into
-    ``caught``): the first alone, the others in batches of ``size`` from the nearest solved
-    case, a case that fails there alone."""
+    ``caught``): the first from the nearest case ``solved_before`` (other structures) of the
+    same layout, else alone; the others in batches of ``size`` from the nearest solved case
+    of the group; a case that fails there alone. The solved cases are appended to
+    ``solved_before``."""
     first = group[0]
-    out[first] = _alone(residuals[first], caught[first], opts)
+    out[first] = _from_neighbour(residuals, first, solved_before, out, caught[first], opts)
+    if out[first] is None:
+        out[first] = _alone(residuals[first], caught[first], opts)
     if isinstance(out[first], ConvergenceError):
         for i in group[1:]:  # no start to share: each case alone
             out[i] = _alone(residuals[i], caught[i], opts)
+        if isinstance(solved_before, list):
+            solved_before.extend(i for i in group if not isinstance(out[i], ConvergenceError))
         return
     solved = [first]
+    rest = group[1:]
+    if not rest:  # a structure of one case: nothing to start from it
+        if isinstance(solved_before, list):
+            solved_before.append(first)
+        return
     anchor = BatchResidual([residuals[first]])
     x_first = out[first].fluxes["x"][None]
     kw0 = newton_options(residuals[first], tol=opts["tol"], max_iter=opts["max_iter"])
-    local = local_unknowns(anchor, x_first[0])
+    layout = _layout(residuals[first])
+    if layout not in opts["local"]:
+        opts["local"][layout] = local_unknowns(anchor, x_first[0])
+    local = opts["local"][layout]
     R_first = anchor(x_first[:, None], np.array([0]))[:, 0]
     start_lu = jacobian_factors(
         anchor, x_first, np.array([0]), R_first, local=local, step_floor=kw0["step_floor"]
     )[0]
     key = {i: _scaled_inputs(residuals[i]) for i in group}
-    rest = group[1:]
     for first_case in range(0, len(rest), size):
         chunk = rest[first_case : first_case + size]
         starts = []
@@ -670,3 +736,5 @@ def _solve_group(residuals, group, size, out, caught, opts):
                 out[i] = _alone(residuals[i], caught[i], opts)
             if not isinstance(out[i], ConvergenceError):
                 solved.append(i)
+    if isinstance(solved_before, list):
+        solved_before.extend(solved)

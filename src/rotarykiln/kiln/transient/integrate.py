@@ -313,7 +313,9 @@ class TransientKiln:
         s = u.speed_factor
         gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
         tb_c, tg_c = np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR)
-        bal = global_balance(res, fl, prod, tb_c, tg_c, qb, qg, u, bed_enthalpy=hb_nodes)
+        bal = global_balance(
+            res, fl, prod, tb_c, tg_c, qb, qg, u, bed_enthalpy=hb_nodes, reaction_from_sources=True
+        )
         kb = qb.shape[0]
         net_b = u.feed - s * qb[:, -1]
         net_g = qg[:, gi] - qg[:, go]

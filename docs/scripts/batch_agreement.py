@@ -1,0 +1,118 @@
+"""Batched against single steady solves on every built-in kiln case and N random operating
+points around each (issue 25's must-show: agreement to 1e-8 K on 200 points per case).
+
+Each point changes the feed and gas flows (+-15 %), the feed temperature (+0..20 K), the gas
+inlet temperature (+-3 %), the rotation (+-15 %) and the heat released (+-10 %): the
+operating points of ``tests/kiln/steady/test_batch.py``. Both paths solve to 1e-13 (1e-12 for
+the calcining kiln, whose residual stops at ~2e-12 in round-off), and the largest difference
+of the bed, gas and wall temperatures is reported per case, with the points that failed in
+either path (a point without a steady state must fail in both, with the same error).
+
+Run: ``.venv/bin/python docs/scripts/batch_agreement.py [N]`` (default 200; a few minutes on
+two cores); prints a Markdown table.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+import warnings
+
+import numpy as np
+
+from rotarykiln.case import load_case
+from rotarykiln.cases import builtin_case_path
+from rotarykiln.errors import ConvergenceError
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.steady.batch import solve_batch
+from rotarykiln.kiln.steady.solve import solve_kiln
+
+CASES = [
+    "tscheng_A16",
+    "barr_T2",
+    "barr_T3",
+    "barr_T4",
+    "barr_T6",
+    "barr_T9",
+    "ubc_pilot_flame",
+    "limestone_calcination",
+    "limestone_fired",
+    "charcoal_activation",
+    "charcoal_activation_kramers",
+    "rotary_pyrolysis",
+]
+TOL = {"limestone_calcination": 1e-12}
+
+
+def operating_points(kiln, n: int, seed: int) -> list:
+    """``n`` kilns around ``kiln`` (the test's operating points)."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for _ in range(n):
+        f = rng.uniform(0.85, 1.15, 4)
+        out.append(
+            kiln.replace(
+                feed__flows={s: v * f[0] for s, v in kiln.feed.flows.items()},
+                feed__temperature=kiln.feed.temperature + rng.uniform(0.0, 20.0),
+                gas__flows={s: v * f[1] for s, v in kiln.gas.flows.items()},
+                gas__temperature=kiln.gas.temperature * rng.uniform(0.97, 1.03),
+                drum__omega=kiln.drum.omega * f[2],
+                firing__heat_release=kiln.firing.heat_release * (0.9 + 0.2 * (f[3] - 0.85) / 0.3),
+            )
+        )
+    return out
+
+
+def compare(name: str, n: int) -> dict:
+    kiln, cells = kiln_from_case(load_case(builtin_case_path(name)))
+    kilns = [kiln, *operating_points(kiln, n, seed=len(name))]
+    tol = TOL.get(name, 1e-13)
+    t0 = time.perf_counter()
+    batched = solve_batch(kilns, cells, tol=tol)
+    t_batch = time.perf_counter() - t0
+    worst, failed, mismatched, t_single = 0.0, 0, 0, 0.0
+    for k, sol in zip(kilns, batched, strict=True):
+        t0 = time.perf_counter()
+        try:
+            single = solve_kiln(k, cells, tol=tol)
+        except ConvergenceError as err:
+            single = err
+        t_single += time.perf_counter() - t0
+        if isinstance(sol, ConvergenceError) or isinstance(single, ConvergenceError):
+            failed += 1
+            if type(sol) is not type(single) or str(sol) != str(single):
+                mismatched += 1
+            continue
+        for attr in ("t_bed", "t_gas", "t_wall"):
+            worst = max(worst, float(np.max(np.abs(getattr(sol, attr) - getattr(single, attr)))))
+    return {
+        "case": name,
+        "points": len(kilns),
+        "max_dT_K": worst,
+        "failed": failed,
+        "failed_differently": mismatched,
+        "batch_ms_per_case": 1e3 * t_batch / len(kilns),
+        "single_ms_per_case": 1e3 * t_single / len(kilns),
+    }
+
+
+def main(n: int = 200) -> None:
+    print(
+        "| case | points | largest difference (K) | failed (both paths) | failed differently |"
+        " batched (ms/case) | single (ms/case) |"
+    )
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for name in CASES:
+            r = compare(name, n)
+            print(
+                f"| {r['case']} | {r['points']} | {r['max_dT_K']:.1e} | {r['failed']} | "
+                f"{r['failed_differently']} | {r['batch_ms_per_case']:.1f} | "
+                f"{r['single_ms_per_case']:.1f} |",
+                flush=True,
+            )
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 200)
