@@ -33,19 +33,24 @@ import yaml
 from rotarykiln.errors import InputError, check_positive, warn_out_of_range
 
 __all__ = [
+    "CLINKER_PHASES",
+    "ClinkerReport",
     "OXIDES",
     "R_GAS",
     "RawMeal",
     "alumina_ratio",
+    "bed_oxide_flows",
     "bogue_coefficients",
     "bogue_phase_composition",
     "carbonate_co2_per_clinker",
     "check_oxide_practice",
     "clinker_reaction_stoichiometry",
+    "clinker_report",
     "element_molar_mass",
     "lea_parker_liquid_curve",
     "lea_parker_liquid_fraction",
     "lea_parker_lsf_coefficients",
+    "lea_parker_melt_fraction",
     "lime_saturation_factor",
     "mastorakos_clinker_rates",
     "mastorakos_recalled_parameters",
@@ -1332,4 +1337,310 @@ def mastorakos_clinker_rates(T, rho, k0, E):
             C**3 * c["Al2O3"],
             C**4 * c["Al2O3"] * c["Fe2O3"],
         ]
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# The clinker of a kiln: bed oxides, smooth melt fraction, outlet report
+# --------------------------------------------------------------------------------------------
+
+#: Oxide of each element of a bed species, and the atoms of the element per oxide formula.
+_ELEMENT_OXIDE = {
+    "Ca": ("CaO", 1),
+    "Si": ("SiO2", 1),
+    "Al": ("Al2O3", 2),
+    "Fe": ("Fe2O3", 2),
+    "Mg": ("MgO", 1),
+    "K": ("K2O", 2),
+    "Na": ("Na2O", 2),
+    "S": ("SO3", 1),
+}
+#: Elements lost on ignition (carbonate CO2, water, organic matter).
+_VOLATILE_ELEMENTS = ("C", "H", "O", "N")
+#: Clinker phases of the species table, with the SimCem phase the Bogue result is named by.
+CLINKER_PHASES = ("C3S", "C2S", "C3A", "C4AF")
+
+
+def bed_oxide_flows(flows, species=None):
+    r"""Oxide (ignited, clinker-basis) mass flows of a bed given by its species flows, kg/s.
+
+    Every metal atom of the bed species is counted as its oxide (Ca as CaO, Si as SiO2, Al as
+    Al2O3, Fe as Fe2O3, Mg as MgO, K as K2O, Na as Na2O, S as SO3); C, H, O, N are lost on
+    ignition (carbonate CO2, moisture). A lumped species without a formula (``inert``, ``ash``)
+    counts whole, as ``other``:
+
+    .. math:: \dot m_{ox} = \sum_i \frac{\dot m_i}{M_i}\,\frac{n_{e,i}}{n_{e,ox}}\,M_{ox}
+
+    Parameters
+    ----------
+    flows : mapping
+        Bed species name -> mass flow, kg/s (floats or arrays of one shape).
+    species : SpeciesTable, optional
+        Defaults to the built-in table.
+
+    Returns
+    -------
+    dict, kg/s
+        ``CaO``, ``SiO2``, ``Al2O3``, ``Fe2O3``, ``MgO``, ``K2O``, ``Na2O``, ``SO3``, ``other``
+        (zeros where absent).
+
+    Examples
+    --------
+    >>> ox = bed_oxide_flows({"CaCO3": 1.0, "C2S": 0.5})
+    >>> round(ox["CaO"], 4), round(ox["SiO2"], 4)
+    (0.8859, 0.1744)
+
+    References
+    ----------
+    Stoichiometry; the ignited basis of a raw meal analysis (loss on ignition), team source
+    folder reference/cement_lime.md 1.1.
+    """
+    from rotarykiln.chemistry.species import default_species
+
+    sp = species or default_species()
+    zero = sum(np.zeros_like(np.asarray(v, dtype=float)) for v in flows.values()) + 0.0
+    out = {ox: zero for ox, _ in _ELEMENT_OXIDE.values()}
+    out["other"] = zero
+    for name, q in flows.items():
+        s = sp[name]
+        q = np.asarray(q, dtype=float)
+        counted = False
+        for el, n in s.elements.items():
+            if el in _ELEMENT_OXIDE:
+                ox, per = _ELEMENT_OXIDE[el]
+                out[ox] = out[ox] + q / s.molar_mass * n / per * molar_mass(ox)
+                counted = True
+            elif el not in _VOLATILE_ELEMENTS and not counted:
+                out["other"] = out["other"] + q  # a lumped pseudo-element species
+                counted = True
+    return {k: (v if np.ndim(v) else float(v)) for k, v in out.items()}
+
+
+def _smoothstep(x):
+    x = np.clip(x, 0.0, 1.0)
+    return x * x * (3.0 - 2.0 * x)
+
+
+def lea_parker_melt_fraction(T, Al2O3, Fe2O3, MgO=0.0, K2O=0.0, Na2O=0.0, width=20.0):
+    r"""Melt fraction of a clinker against temperature, vectorised and continuous (kiln form).
+
+    The piecewise-linear curve of :func:`lea_parker_liquid_curve` through the Lea-Parker points
+    at 1338, 1400 and 1450 degC (constant above), with the jump at the 1338 degC invariant
+    point (1611.15 K) replaced by a C1 ramp (smoothstep) over ``width`` below it:
+
+    .. math:: L(T) = L_{1338}\,s\!\left(\frac{T - (T_{1338} - w)}{w}\right),\quad
+        s(x) = x^2(3 - 2x),\qquad T < T_{1338}
+
+    so a Newton solver sees a rate that is zero below :math:`T_{1338} - w` and continuous.
+    Compositions may be arrays (one per kiln cell).
+
+    Parameters
+    ----------
+    T : float or array, K
+        Temperature.
+    Al2O3, Fe2O3, MgO, K2O, Na2O : float or array, -
+        Clinker mass fractions (ignited basis).
+    width : float, K
+        Width of the onset ramp (> 0); 20 K by default, inside the +-30 K uncertainty of the
+        melt onset of commercial mixes [recalled, cement_lime.md 2].
+
+    Returns
+    -------
+    float or ndarray, -
+        Liquid mass fraction.
+
+    Examples
+    --------
+    >>> round(float(lea_parker_melt_fraction(1698.15, 0.055, 0.033, 0.017)) * 100, 2)
+    25.41
+    >>> float(lea_parker_melt_fraction(1590.0, 0.055, 0.033, 0.017))
+    0.0
+
+    References
+    ----------
+    Lea & Parker (1934/35) (coefficients: data/clinker/models.yaml, 1450 degC SEEN, 1400 and
+    1338 degC recalled); team source folder reference/cement_lime.md section 2.
+    """
+    if not (math.isfinite(width) and width > 0.0):
+        raise InputError("width", width, "> 0 K")
+    T = np.asarray(T, dtype=float)
+    check_positive("T", T, "K")
+    Tk = (1611.15, 1673.15, 1723.15)
+    L = [
+        np.asarray(lea_parker_liquid_fraction(Al2O3, Fe2O3, MgO, K2O, Na2O, T=t), dtype=float)
+        for t in Tk
+    ]
+    x1 = np.clip((T - Tk[0]) / (Tk[1] - Tk[0]), 0.0, 1.0)
+    x2 = np.clip((T - Tk[1]) / (Tk[2] - Tk[1]), 0.0, 1.0)
+    above = np.where(T < Tk[1], L[0] + x1 * (L[1] - L[0]), L[1] + x2 * (L[2] - L[1]))
+    ramp = _smoothstep((T - (Tk[0] - width)) / width)
+    out = np.where(T < Tk[0], L[0] * ramp, above)
+    return out if out.ndim else float(out)
+
+
+@dataclass(frozen=True)
+class ClinkerReport:
+    """The clinker leaving a kiln: phases, free lime, Bogue of the same oxides, heats.
+
+    All fractions are mass fractions of the bed leaving the kiln (the clinker; unreacted
+    carbonate included in the total), as floats.
+
+    Attributes
+    ----------
+    phases : dict
+        ``C3S``, ``C2S``, ``C3A``, ``C4AF`` of the kiln solution, -.
+    free_lime : float
+        Uncombined CaO, -.
+    unreacted : dict
+        The other bed species (SiO2, Al2O3, Fe2O3, CaCO3, MgO, ...), -.
+    oxides : dict
+        The clinker's oxides (ignited basis: CaO, SiO2, Al2O3, Fe2O3, MgO, ...), -.
+    bogue : dict
+        Bogue's potential composition of the same oxides (:func:`bogue_phase_composition`), -.
+    bogue_free_lime : dict
+        Bogue with the solution's free lime subtracted from CaO, -.
+    heat_of_formation : float or None
+        Heat of the reactions from the feed to this clinker at 298.15 K (formation enthalpies
+        of the species table; CO2 released as gas), J/kg clinker; None without the feed.
+    theoretical_heat : float
+        Theoretical heat of clinker formation of the same oxides
+        (:func:`theoretical_heat_of_clinker_formation`, carbonate raw meal), J/kg clinker.
+    loss_on_ignition : float
+        Mass lost by the clinker on ignition (residual carbonate CO2, moisture), -.
+    mass_flow : float
+        Bed mass flow at the outlet, kg/s.
+    """
+
+    phases: dict
+    free_lime: float
+    unreacted: dict
+    oxides: dict
+    bogue: dict
+    bogue_free_lime: dict
+    heat_of_formation: float | None
+    theoretical_heat: float
+    loss_on_ignition: float
+    mass_flow: float
+
+    def to_frame(self):
+        """One row per quantity: the solution's phases beside Bogue's, in mass %."""
+        import pandas as pd
+
+        rows = []
+        for p in CLINKER_PHASES:
+            rows.append(
+                (p, 100 * self.phases[p], 100 * self.bogue[p], 100 * self.bogue_free_lime[p])
+            )
+        rows.append(("CaO_free", 100 * self.free_lime, 0.0, 100 * self.free_lime))
+        return pd.DataFrame(
+            rows, columns=["phase", "kiln_pct", "bogue_pct", "bogue_with_free_lime_pct"]
+        ).set_index("phase")
+
+
+def _outlet_flows(source):
+    """Bed species -> outlet flow (kg/s) of a kiln solution or of a mapping of flows."""
+    flows = getattr(source, "bed_flows", source)
+    out = {}
+    for name, q in flows.items():
+        a = np.asarray(q, dtype=float)
+        out[str(name)] = float(a[-1]) if a.ndim else float(a)
+    return out
+
+
+def clinker_report(source, feed=None, species=None):
+    r"""The outlet clinker of a kiln: phases, free lime, Bogue of the same oxides, heats.
+
+    Phases and free lime are the outlet bed flows over the outlet bed flow. Beside them, Bogue's
+    potential composition of the same oxides (:func:`bed_oxide_flows`, ignited basis), once as
+    is and once with the free lime subtracted, scaled to the outlet mass (a clinker whose
+    reactions ran to completion with pure phases has exactly Bogue's composition). The heat of
+    formation is
+
+    .. math:: Q = \frac{1}{\dot m_{out}}\Big(\sum_{out} \dot n_i \Delta_f H_i
+        + \dot n_{CO_2}\Delta_f H_{CO_2} - \sum_{in} \dot n_i \Delta_f H_i\Big)
+
+    with :math:`\dot n_{CO_2}` the carbon the bed lost (released as CO2), all at 298.15 K.
+
+    Parameters
+    ----------
+    source : KilnSolution or mapping
+        A kiln solution (its ``bed_flows``, the outlet at the last face) or a mapping bed
+        species -> outlet mass flow, kg/s.
+    feed : mapping, optional
+        Bed species -> feed mass flow, kg/s (for the heat of formation).
+    species : SpeciesTable, optional
+        Defaults to the built-in table.
+
+    Returns
+    -------
+    ClinkerReport, -
+        Fractions as mass fractions (-), heats in J/kg clinker, the outlet flow in kg/s.
+
+    Examples
+    --------
+    >>> r = clinker_report({"C3S": 0.5578, "C2S": 0.2099, "C3A": 0.0899, "C4AF": 0.1004,
+    ...                     "MgO": 0.017, "CaO": 0.0})
+    >>> round(r.phases["C3S"] * 100, 1), round(r.bogue["C3S"] * 100, 1)
+    (57.2, 57.2)
+
+    References
+    ----------
+    Bogue (1929); SimCem database heats (team source folder reference/cement_lime.md 1.2, 3.2).
+    """
+    from rotarykiln.chemistry.species import default_species
+
+    sp = species or default_species()
+    flows = _outlet_flows(source)
+    for name, q in flows.items():
+        if name not in sp or sp[name].phase != "bed":
+            raise InputError(f"bed_flows.{name}", name, "a bed species")
+        if not (math.isfinite(q) and q >= 0.0):
+            raise InputError(f"bed_flows.{name}", q, ">= 0 kg/s")
+    total = sum(flows.values())
+    if total <= 0.0:
+        raise InputError("bed_flows", total, "a positive outlet flow")
+    w = {k: v / total for k, v in flows.items()}
+    ox = bed_oxide_flows(flows, sp)
+    ignited = sum(ox.values())
+    oxides = {k: v / ignited for k, v in ox.items()}
+    loi = 1.0 - ignited / total
+    free_lime = w.get("CaO", 0.0)
+    # Bogue on the ignited clinker, scaled back to the outlet mass
+    scale = ignited / total
+    fe = max(oxides["Fe2O3"], 1e-12)
+    args = (oxides["CaO"], oxides["SiO2"], oxides["Al2O3"], fe, oxides["SO3"])
+    bogue = {k: v * scale for k, v in bogue_phase_composition(*args).items()}
+    bogue_fl = bogue_phase_composition(*args, free_lime=min(free_lime / scale, oxides["CaO"]))
+    bogue_fl = {k: v * scale for k, v in bogue_fl.items()}
+    phases = {p: w.get(p, 0.0) for p in CLINKER_PHASES}
+    unreacted = {k: v for k, v in w.items() if k not in CLINKER_PHASES and k != "CaO"}
+    heat = None
+    if feed is not None:
+        h = 0.0
+        carbon = 0.0
+        for sign, fl in ((1.0, flows), (-1.0, _outlet_flows(feed))):
+            for name, q in fl.items():
+                s = sp[name]
+                if q == 0.0:
+                    continue
+                if s.h_f is None:
+                    raise InputError(f"species.{name}.h_f", None, "known (for the heat)")
+                h += sign * q / s.molar_mass * s.h_f
+                carbon -= sign * q / s.molar_mass * s.elements.get("C", 0.0)
+        h += carbon * sp["CO2"].h_f
+        heat = h / total
+    theo = theoretical_heat_of_clinker_formation(
+        oxides["CaO"], oxides["SiO2"], oxides["Al2O3"], fe, oxides["MgO"]
+    )
+    return ClinkerReport(
+        phases=phases,
+        free_lime=free_lime,
+        unreacted=unreacted,
+        oxides=oxides,
+        bogue=bogue,
+        bogue_free_lime=bogue_fl,
+        heat_of_formation=heat,
+        theoretical_heat=float(theo),
+        loss_on_ignition=loi,
+        mass_flow=total,
     )

@@ -18,6 +18,10 @@ equilibrium_calcination    Luisser x (1 - p_CO2/p_eq), Baker p_eq       bed_mass
 ortiz_activation           Ortiz et al. steam activation, onset T       steam_mass_flow kg/s
 wen_yen                    kerogen 5-rate scheme, step 1..5             bed_mass_flow_in (3-5)
 arrhenius                  A (T/T_ref)^b exp(-E/RT) m'_basis prod p^n   (none)
+mass_action                A exp(-E/RT) prod rho_i^n_i (Mastorakos form)  (none)
+                           [x Lea-Parker melt fraction: ``melt``]
+carbonate_equilibrium      A exp(-E/RT) m'_basis (1 - p_CO2/p_eq),      p_CO2
+                           Holland & Powell p_eq (calcite, dolomite...)
 =========================  ===========================================  ========================
 """
 
@@ -171,6 +175,8 @@ class RateLaw:
                 raise InputError(f"{where}.{k}", params[k], "> 0")
         if self.name == "boiling_drying":
             _check_boiling_params(params, given, where)
+        if self.name == "mass_action":
+            _check_mass_action_params(params, where, basis)
         if self.name == "wen_yen":
             step = params["step"]
             if step not in (1.0, 2.0, 3.0, 4.0, 5.0):
@@ -239,6 +245,23 @@ def _ahmad_drying(ctx, basis, p):
         ),
         dtype=float,
     ) * np.ones(ctx.n)
+
+
+def _check_mass_action_params(params: dict, where: str, basis: str) -> None:
+    """``mass_action``: basis first order, every order >= 1, density > 0, melt width > 0."""
+    orders = params["orders"]
+    if orders and orders.get(basis) != 1.0:
+        raise InputError(
+            f"{where}.orders.{basis}", orders.get(basis, "missing"), "1 (the basis is first order)"
+        )
+    for name, n in orders.items():
+        if n < 1.0:
+            raise InputError(
+                f"{where}.orders.{name}", n, ">= 1 (the rate must vanish with every reactant)"
+            )
+    for k in ("density", "melt_width"):
+        if params[k] <= 0:
+            raise InputError(f"{where}.{k}", params[k], "> 0")
 
 
 def _check_boiling_params(params: dict, given: Mapping, where: str) -> None:
@@ -426,3 +449,88 @@ def _arrhenius(ctx, basis, p):
     if p["T_on"] > 0:
         r = r * onset_window(T, p["T_on"])
     return r
+
+
+def _bed_fractions(ctx) -> tuple[np.ndarray, np.ndarray]:
+    """Total bed flow (kg/s, > 0 guarded) and its reciprocal, shape (n,)."""
+    total = ctx._total
+    fed = total > 0
+    return total, np.where(fed, 1.0 / np.where(fed, total, 1.0), 0.0)
+
+
+def _melt_fraction(ctx, width: float) -> np.ndarray:
+    """Lea-Parker melt fraction of every cell's bed, from its oxides (ignited basis)."""
+    from rotarykiln.chemistry.clinker import bed_oxide_flows, lea_parker_melt_fraction
+
+    ox = bed_oxide_flows(ctx.state.bed_mass_flow, ctx.species)
+    ign = sum(np.asarray(v, dtype=float) * np.ones(ctx.n) for v in ox.values())
+    ok = ign > 0
+    inv = np.where(ok, 1.0 / np.where(ok, ign, 1.0), 0.0)
+
+    def w(name):
+        return np.clip(np.asarray(ox[name], dtype=float) * inv, 0.0, 1.0)
+
+    return np.asarray(
+        lea_parker_melt_fraction(
+            ctx.T_bed, w("Al2O3"), w("Fe2O3"), w("MgO"), w("K2O"), w("Na2O"), width
+        ),
+        dtype=float,
+    ) * np.ones(ctx.n)
+
+
+@register_rate_law(
+    "mass_action",
+    {"A": 1.0, "E": 0.0, "orders": {}, "density": 1500.0, "melt": "none", "melt_width": 20.0},
+    "r = A exp(-E/RT) prod rho_i^n_i [mol/(m3 s)], rho_i = density w_i; x Lea-Parker melt",
+    choices={"melt": ("none", "lea_parker")},
+    flow_order=1.0,  # first order in the basis (checked at load)
+)
+def _mass_action(ctx, basis, p):
+    r"""Mass action on bed concentrations (Mastorakos et al. 1999 form), per kiln length.
+
+    The reaction extent per bed volume (mol/(m3 s), per mole of basis: write the basis with
+    coefficient -1) is :math:`A e^{-E/RT_b}\prod_i \rho_i^{n_i}` with :math:`\rho_i = \rho_b w_i`
+    (kg/m3 of bed, :math:`w_i` the bed mass fractions, :math:`\rho_b` = ``density``); times
+    the bed cross-section :math:`m'/\rho_b` and the basis molar mass it is the basis consumption
+    in kg/(s m). ``orders`` must give the basis the order 1 and every other reactant an order
+    >= 1, so the rate vanishes with any reactant (no negative flows with the kiln's implicit
+    upwind cells) and stays a polynomial in the flows (smooth for Newton). ``melt:
+    lea_parker`` multiplies by the Lea-Parker melt fraction of the cell's own oxides at the bed
+    temperature (:func:`~rotarykiln.chemistry.clinker.lea_parker_melt_fraction`, zero below
+    1338 degC - ``melt_width``).
+    """
+    rho_b = p["density"]
+    _, inv = _bed_fractions(ctx)
+    orders = dict(p["orders"]) or {basis: 1.0}
+    r = p["A"] * np.exp(-p["E"] / (R_GAS * ctx.T_bed))
+    for name, n in orders.items():
+        r = r * (rho_b * ctx.flow(name) * inv) ** n
+    area = ctx.state.bed_mass_per_length / rho_b  # bed cross-section, m2
+    r = r * area * ctx.species[basis].molar_mass
+    if p["melt"] == "lea_parker":
+        r = r * _melt_fraction(ctx, p["melt_width"])
+    return r
+
+
+@register_rate_law(
+    "carbonate_equilibrium",
+    {"A": 9.8e4, "E": 142000.0, "carbonate": "calcite"},
+    "r = A exp(-E/RT) m'_basis max(0, 1 - p_CO2/p_eq), p_eq of Holland & Powell (2011)",
+    choices={"carbonate": ("calcite", "magnesite", "dolomite_half", "dolomite_full")},
+)
+def _carbonate_equilibrium(ctx, basis, p):
+    r"""First-order decomposition of a carbonate driven by its CO2 equilibrium.
+
+    :math:`r = A e^{-E/RT_b}\,m'_{basis}\,\max(0, 1 - p_{CO_2}/p_{eq}(T_b))`, kg/(s m), with
+    :math:`p_{eq}` of :func:`~rotarykiln.chemistry.lime.holland_powell_co2_equilibrium_pressure`
+    (evaluated with T held in the data's 273-2000 K range). First order in the basis hold-up, so
+    it also runs on a carbonate made in the kiln (the CaCO3 of half-calcined dolomite), which a
+    conversion-based law (fed reactants only) cannot.
+    """
+    from rotarykiln.chemistry.lime import holland_powell_co2_equilibrium_pressure  # scipy
+
+    T = np.clip(ctx.T_bed, 300.0, 2000.0)
+    peq = np.asarray(holland_powell_co2_equilibrium_pressure(T, p["carbonate"]), dtype=float)
+    drive = np.maximum(1.0 - ctx.p("CO2") / np.maximum(peq, 1e-300), 0.0)
+    k = p["A"] * np.exp(-p["E"] / (R_GAS * ctx.T_bed))
+    return k * ctx.holdup(basis) * drive

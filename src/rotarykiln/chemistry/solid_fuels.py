@@ -263,7 +263,12 @@ class SolidFuel:
                 "proximate.moisture", prox["moisture"], f"absent on the {proximate_basis} basis"
             )
         if moisture_ar is None:
-            if "ar" in (ultimate_basis, proximate_basis, hhv_basis):
+            needs_ar = (
+                ultimate_basis == "ar"
+                or (proximate is not None and proximate_basis == "ar")
+                or (hhv is not None and hhv_basis == "ar")
+            )
+            if needs_ar:
                 raise InputError("moisture_ar", "missing", "given (the as-received moisture)")
             moisture_ar = 0.0
         moisture_ar = _frac("moisture_ar", moisture_ar)
