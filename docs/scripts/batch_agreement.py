@@ -14,9 +14,11 @@ two cores); prints a Markdown table.
 
 from __future__ import annotations
 
+import importlib.util
 import sys
 import time
 import warnings
+from pathlib import Path
 
 import numpy as np
 
@@ -41,32 +43,26 @@ CASES = [
     "charcoal_activation_kramers",
     "rotary_pyrolysis",
 ]
-TOL = {"limestone_calcination": 1e-12}
 
 
-def operating_points(kiln, n: int, seed: int) -> list:
-    """``n`` kilns around ``kiln`` (the test's operating points)."""
-    rng = np.random.default_rng(seed)
-    out = []
-    for _ in range(n):
-        f = rng.uniform(0.85, 1.15, 4)
-        out.append(
-            kiln.replace(
-                feed__flows={s: v * f[0] for s, v in kiln.feed.flows.items()},
-                feed__temperature=kiln.feed.temperature + rng.uniform(0.0, 20.0),
-                gas__flows={s: v * f[1] for s, v in kiln.gas.flows.items()},
-                gas__temperature=kiln.gas.temperature * rng.uniform(0.97, 1.03),
-                drum__omega=kiln.drum.omega * f[2],
-                firing__heat_release=kiln.firing.heat_release * (0.9 + 0.2 * (f[3] - 0.85) / 0.3),
-            )
-        )
-    return out
+def _test_module():
+    """tests/kiln/steady/test_batch.py: its operating points and tolerances are the ones used
+    here (one definition)."""
+    path = Path(__file__).resolve().parents[2] / "tests" / "kiln" / "steady" / "test_batch.py"
+    spec = importlib.util.spec_from_file_location("batch_test_points", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+_TEST = _test_module()
+operating_points = _TEST.operating_points
 
 
 def compare(name: str, n: int) -> dict:
     kiln, cells = kiln_from_case(load_case(builtin_case_path(name)))
     kilns = [kiln, *operating_points(kiln, n, seed=len(name))]
-    tol = TOL.get(name, 1e-13)
+    tol = _TEST.TOL_OF.get(name, _TEST.TOL)
     t0 = time.perf_counter()
     batched = solve_batch(kilns, cells, tol=tol)
     t_batch = time.perf_counter() - t0
