@@ -429,6 +429,103 @@ class BurnerAir(Section):
         return self.composition or AIR
 
 
+SpecificEnergy = quantity("specific energy", gt=0, le=2e8, shown="in (0, 200 MJ/kg]")
+Size = quantity("length", gt=0, le=0.1, shown="in (0, 100 mm]")
+AnalysisFraction = quantity("fraction", ge=0, le=1, shown="in [0, 100 %]")
+
+
+class Fineness(Section):
+    """A pulverised fuel's size distribution: Rosin-Rammler by its residue on a sieve
+    (``residue`` on ``sieve``, e.g. R90 = 12 % on 90 um) or its size parameter ``x_prime``,
+    with the spread ``n`` (about 1 to 1.2 for kiln coal); ``classes`` size classes."""
+
+    n: Annotated[float, BeforeValidator(lambda v: _positive_number(v))] = 1.1
+    x_prime: Size | None = None
+    residue: Fraction | None = None
+    sieve: Size | None = None
+    classes: int = Field(default=8, ge=1, le=40)
+
+    @model_validator(mode="after")
+    def _one_size(self):
+        if (self.x_prime is None) == (self.residue is None):
+            raise PydanticCustomError(
+                "fineness", "give x_prime, or residue with sieve (e.g. 12 % on 90 um)", {}
+            )
+        if self.residue is not None and (self.sieve is None or not 0 < self.residue < 1):
+            raise PydanticCustomError(
+                "fineness", "residue in (0, 100 %) with its sieve size (e.g. sieve: 90 um)", {}
+            )
+        return self
+
+    def distribution(self):
+        """The :class:`~rotarykiln.chemistry.fuel_burnout.ParticleSizeDistribution`."""
+        from rotarykiln.chemistry.fuel_burnout import (
+            ParticleSizeDistribution,
+            rosin_rammler_x_prime,
+        )
+
+        x = self.x_prime
+        if x is None:
+            x = rosin_rammler_x_prime(self.sieve, self.residue, self.n)
+        return ParticleSizeDistribution.rosin_rammler(x, self.n, self.classes)
+
+
+class FiredFuelSection(Section):
+    """A solid or liquid fuel of the burner: a fuel of the library (``library``: a name of
+    data/fuels/kiln_fuels.yaml, e.g. ``pittsburgh_8``) or its analyses: ``ultimate`` (C, H, N,
+    S, Cl, O (by difference when absent), ash; mass fractions or %) on ``ultimate_basis``
+    (``ar`` as received, ``ad`` air dried, ``d`` dry, ``daf``), ``proximate`` (moisture,
+    volatiles, fixed_carbon, ash) on ``proximate_basis``, ``moisture`` as received when no
+    proximate analysis gives it, ``heating_value`` (HHV on ``heating_value_basis``; default
+    Channiwala-Parikh from the ultimate analysis); its as-fired ``flow``; ``fineness`` (a solid
+    fuel's grind, for the ``particles`` combustion model); ``specific_heat`` of the fuel fed
+    hot (default 1.25 kJ/(kg K) solid, 2.0 liquid)."""
+
+    name: str | None = None
+    library: str | None = None
+    ultimate: dict[str, AnalysisFraction] | None = None
+    ultimate_basis: Literal["ar", "ad", "d", "daf"] = "d"
+    proximate: dict[str, AnalysisFraction] | None = None
+    proximate_basis: Literal["ar", "ad", "d", "daf"] = "ar"
+    moisture: AnalysisFraction | None = None
+    heating_value: SpecificEnergy | None = None
+    heating_value_basis: Literal["ar", "ad", "d", "daf"] = "ar"
+    flow: MassFlow
+    fineness: Fineness | None = None
+    specific_heat: SpecificHeat | None = None
+
+    @model_validator(mode="after")
+    def _one_fuel(self):
+        if (self.library is None) == (self.ultimate is None):
+            raise PydanticCustomError(
+                "fuel", "give library (a fuel of the library) or ultimate (its analysis)", {}
+            )
+        if self.flow <= 0:
+            raise PydanticCustomError("number", "flow > 0 kg/s (a fuel fired)", {})
+        self.solid_fuel()
+        return self
+
+    def solid_fuel(self):
+        """The :class:`~rotarykiln.chemistry.solid_fuels.SolidFuel` (analyses checked)."""
+        from rotarykiln.chemistry.solid_fuels import SolidFuel, load_kiln_fuel
+
+        try:
+            if self.library is not None:
+                return load_kiln_fuel(self.library)
+            return SolidFuel.from_analyses(
+                ultimate=dict(self.ultimate),
+                ultimate_basis=self.ultimate_basis,
+                proximate=None if self.proximate is None else dict(self.proximate),
+                proximate_basis=self.proximate_basis,
+                moisture_ar=self.moisture,
+                hhv=self.heating_value,
+                hhv_basis=self.heating_value_basis,
+                name=self.name or "fuel",
+            )
+        except InputError as exc:
+            raise PydanticCustomError("fuel", "{msg}", {"msg": str(exc)}) from None
+
+
 class Burner(Section):
     """A burner at the gas inlet end (see docs/heat.md, "Burner and flame").
 
@@ -448,27 +545,37 @@ class Burner(Section):
     ``air_ingress``: air leaking in at the feed end (the kiln inlet seal), a flow and a
     temperature: in a counter-current kiln it dilutes the exhaust leaving there (the exhaust
     temperature and O2 reported after it), in a co-current kiln it joins the burner's air.
+    ``solid_fuels``, ``liquid_fuels``: coal, petroleum coke, alternative fuels, fuel oil
+    (:class:`FiredFuelSection` each), fired alone (``fuel_flow`` absent) or with the gaseous
+    fuel; their ash falls into the bed. ``combustion: particles`` burns the solid fuels by
+    their particles' burn-out along the kiln (docs/cement_lime.md).
     """
 
     fuel: Annotated[str, BeforeValidator(_fuel_composition)] = (
         "CH4:0.95, C2H6:0.03, N2:0.01, CO2:0.01"
     )
-    fuel_flow: GasFlowText
+    fuel_flow: GasFlowText = None
     fuel_temperature: Temperature = 298.15
     primary_air: BurnerAir | None = None
     secondary_air: BurnerAir | None = None
     reference_temperature: Temperature | None = None
     reference_pressure: Pressure | None = None
     nozzle_diameter: Length | None = None
-    combustion: Literal["instant", "burnout", "stirred"] = "instant"
+    combustion: Literal["instant", "burnout", "stirred", "particles"] = "instant"
     products: Literal["equilibrium", "complete"] = "equilibrium"
     flame_length: Length | None = None
     recirculation_length: Length | None = None
     soot_volume_fraction: SootFraction = 0.0
     air_ingress: BurnerAir | None = None
+    solid_fuels: list[FiredFuelSection] = Field(default_factory=list)
+    liquid_fuels: list[FiredFuelSection] = Field(default_factory=list)
 
     @model_validator(mode="after")
     def _flows(self):
+        if self.fuel_flow is None and not (self.solid_fuels or self.liquid_fuels):
+            raise PydanticCustomError(
+                "number", "fuel_flow: missing (required, or solid_fuels / liquid_fuels)", {}
+            )
         self.mass_flows()
         self.ingress_flow()
         return self
@@ -532,7 +639,11 @@ class Burner(Section):
             x = dict(parse_composition(stream.gas))
             return x["O2"] / sum(x.values())
 
-        fuel = convert("fuel_flow", self.fuel_flow, molar_mass(self.fuel))
+        fired = bool(self.solid_fuels or self.liquid_fuels)
+        if self.fuel_flow is None:
+            fuel = 0.0
+        else:
+            fuel = convert("fuel_flow", self.fuel_flow, molar_mass(self.fuel), fired)
         prim = sec = 0.0
         o2_supplied = 0.0  # mol/s
         if self.primary_air is not None:
@@ -547,6 +658,8 @@ class Burner(Section):
             raise PydanticCustomError(
                 "number", "fuel without air: the air flows sum to 0 (a flame needs air)", {}
             )
+        if fired:  # the air ratio of solid and liquid fuels: checked when they are burnt
+            return fuel, prim, sec
         o2_demand = fuel_data(parse_composition(self.fuel))[1]  # mol O2 per mol of fuel
         ratio = o2_supplied / (fuel / molar_mass(self.fuel) * o2_demand)  # the air ratio
         stoichiometric = (prim + sec) / ratio  # kg/s of these streams that burn the fuel

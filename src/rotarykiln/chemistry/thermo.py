@@ -212,7 +212,9 @@ def thermo_from_dict(name: str, spec: Mapping, molar_mass: float) -> SpeciesTher
     - ``nasa7: {T_range: [T_low, T_mid, T_high], coefficients: [[a1..a5], [a1..a5]]}`` (or
       one range: ``T_range: [T_low, T_high]``, ``coefficients: [a1..a5]``; a6, a7 may follow,
       they are not used: the formation enthalpy is the species' ``h_f``);
-    - ``shomate: {T_range: [T_low, T_high], coefficients: [A, B, C, D, E], basis: molar|mass}``;
+    - ``shomate: {T_range: [T_low, T_high], coefficients: [A, B, C, D, E], basis: molar|mass}``
+      (or NIST's several ranges: ``T_range: [T_low, T_mid, T_high]``, ``coefficients:
+      [[A..E], [A..E]]``);
     - ``polynomial: {T_range: [T_low, T_high], coefficients: [c0, c1, ...]}`` (J/(kg K), T in K).
 
     Refused with a one-line :class:`InputError` naming the field: an unknown form, a wrong
@@ -286,12 +288,17 @@ def thermo_from_dict(name: str, spec: Mapping, molar_mass: float) -> SpeciesTher
         ranges = tuple((t[i], t[i + 1], cs[i]) for i in range(len(cs)))
         scale = R_GAS / molar_mass
     elif kind == "shomate":
-        t = _t_range(f"{fk}.T_range", body["T_range"], 1)
-        vals = _numbers(f"{fk}.coefficients", coefs, 5)
+        two = isinstance(coefs, list | tuple) and coefs and isinstance(coefs[0], list | tuple)
+        sets = list(coefs) if two else [coefs]
+        t = _t_range(f"{fk}.T_range", body["T_range"], len(sets))
+        cs = [
+            tuple(_numbers(f"{fk}.coefficients[{i}]" if two else f"{fk}.coefficients", c, 5))
+            for i, c in enumerate(sets)
+        ]
         basis = body.get("basis", "molar")
         if basis not in ("molar", "mass"):
             raise InputError(f"{fk}.basis", basis, "molar (J/(mol K), NIST) or mass (J/(kg K))")
-        ranges = ((t[0], t[1], tuple(vals)),)
+        ranges = tuple((t[i], t[i + 1], cs[i]) for i in range(len(cs)))
         scale = 1.0 / molar_mass if basis == "molar" else 1.0
     else:
         t = _t_range(f"{fk}.T_range", body["T_range"], 1)

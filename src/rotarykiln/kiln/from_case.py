@@ -354,7 +354,7 @@ def _inlet_gas(case) -> dict:
         if b.soot_volume_fraction > 0:
             out["soot"] = _luminous_zone(b, flame, length, case.operation.counter_current)
         out.update(
-            gas_in=_mass_flows(p.composition, p.mass_flow),
+            gas_in=_products_flows(p),
             gas_in_mole=p.composition,
             gas_flow=p.mass_flow,
             gas_inlet_temperature=flame.inlet_temperature,
@@ -380,6 +380,17 @@ def _inlet_gas(case) -> dict:
         gas_in=gas_in, gas_in_mole=mole, gas_flow=g.flow, gas_inlet_temperature=g.temperature
     )
     return out
+
+
+def _products_flows(products) -> dict[str, float]:
+    """Species mass flows (kg/s) of a burner's products: by their mass fractions when the
+    products were made by elements (solid and liquid fuels: exact), else by their mole
+    fractions (:func:`_mass_flows`)."""
+    table = products.table
+    if hasattr(table, "mass_fractions"):
+        pairs = zip(table.names, table.mass_fractions, strict=True)
+        return {n: w * products.mass_flow for n, w in pairs}
+    return _mass_flows(products.composition, products.mass_flow)
 
 
 def _luminous_zone(section, flame, length: float, counter_current: bool):
@@ -425,16 +436,29 @@ def _shares(composition) -> tuple[tuple[tuple[str, float], ...], float]:
     """Species -> x M (kg/mol, species outside the chemistry table counted as N2) of a gas of
     mole fractions ``composition`` (text or pairs), and their sum."""
     from rotarykiln.chemistry.species import default_species
-    from rotarykiln.materials.gas import molar_mass, parse_composition
+    from rotarykiln.materials.gas import parse_composition
 
     pairs = parse_composition(composition) if isinstance(composition, str) else composition
     known = set(default_species().gas_names)
     mass: dict[str, float] = {}
     for name, x in pairs:
         key = name if name in known else "N2"
-        mass[key] = mass.get(key, 0.0) + x * molar_mass(f"{name}:1")
+        mass[key] = mass.get(key, 0.0) + x * gas_molar_mass(name)
     total = sum(mass.values())
     return tuple(mass.items()), total
+
+
+@lru_cache(maxsize=128)
+def gas_molar_mass(name: str) -> float:
+    """Molar mass of a gas species, kg/mol: GRI-Mech 3.0's (Cantera), or the chemistry
+    table's for a species outside it (SO2 of a fuel's sulphur)."""
+    from rotarykiln.chemistry.species import default_species
+    from rotarykiln.materials.gas import molar_mass
+
+    sp = default_species()
+    if name in sp.gas_names and sp[name].thermo is not None:
+        return float(sp[name].molar_mass)
+    return molar_mass(f"{name}:1")
 
 
 def _mole_text(mass_fractions: dict[str, float]) -> str:
@@ -528,7 +552,29 @@ def burner_from_case(section, counter_current: bool = True) -> Burner:
         ingress_at_burner=not counter_current,
         products=section.products,
         recirculation_length=section.recirculation_length,
+        fired=fired_fuels_from_case(section),
     )
+
+
+def fired_fuels_from_case(section) -> tuple:
+    """The :class:`~rotarykiln.kiln.combustion.fired_fuels.FiredFuel` of a burner section's
+    ``solid_fuels`` and ``liquid_fuels`` (labels ``solid_fuels[i]``, ``liquid_fuels[i]``)."""
+    from rotarykiln.kiln.combustion.fired_fuels import FiredFuel
+
+    out = []
+    for state, items in (("solid", section.solid_fuels), ("liquid", section.liquid_fuels)):
+        for i, f in enumerate(items):
+            out.append(
+                FiredFuel(
+                    f.solid_fuel(),
+                    f.flow,
+                    state,
+                    None if f.fineness is None else f.fineness.distribution(),
+                    f.specific_heat,
+                    label=f"{state}_fuels[{i}]" if f.name is None else f.name,
+                )
+            )
+    return tuple(out)
 
 
 def mechanism_from_case(chem):

@@ -98,10 +98,14 @@ class KilnResidual:
         S = mech.mass_stoichiometry  # (n_reactions, n_species)
         touched = np.any(S != 0.0, axis=0)
         self.species = sp
+        # a burner's solid fuels drop their ash into the bed (kg/s, at 298.15 K)
+        ash = float(getattr(k.firing.flame, "ash_flow", 0.0) or 0.0)
+        self.bed_sources = {"ash": ash} if ash > 0 else {}
         self.bed_names = tuple(
             s
             for i, s in enumerate(sp.names)
-            if sp[s].phase == "bed" and (touched[i] or k.feed.flows.get(s, 0) > 0)
+            if sp[s].phase == "bed"
+            and (touched[i] or k.feed.flows.get(s, 0) > 0 or s in self.bed_sources)
         )
         self.gas_names = tuple(
             s
@@ -156,6 +160,7 @@ class KilnResidual:
             heat_release_profile=k.firing.profile,
         )
         self.n, self.z_nodes, self.z, self.dz = g.n, g.z_nodes, g.z, g.dz
+        self.bed_source, self.bed_source_faces = self._bed_sources()
         if k.wall.jacket is not None:
             self.wall = k.wall.jacket.wall(k, g)
         elif k.wall.layers:
@@ -246,6 +251,30 @@ class KilnResidual:
         return max(abs(span_g), abs(span_s), 1.0)
 
     # --- unpacking ---------------------------------------------------------------------------
+    def _bed_sources(self):
+        """What falls into the bed per cell, kg/(s m) (n, n_bed): a burner's ash where its
+        fuel releases its heat (the burner's cell when it burns at the inlet); and its sum
+        from the feed end to each face, kg/s (n + 1, n_bed), for the species whose flows are
+        not unknowns (the others take it in their species rows)."""
+        n, nb = self.n, len(self.bed_names)
+        per_cell = np.zeros((n, nb))
+        faces = np.zeros((n + 1, nb))
+        if not self.bed_sources:
+            return per_cell, faces
+        k = self.kiln
+        if k.firing.heat_release > 0:
+            w = np.asarray(self.grid.heat_release, dtype=float) * self.dz
+            w = w / w.sum()
+        else:  # burnt at the burner: the ash falls into the burner's cell
+            w = np.zeros(n)
+            w[-1 if k.gas.counter_current else 0] = 1.0
+        for name, flow in self.bed_sources.items():
+            i = self.bed_names.index(name)
+            per_cell[:, i] = flow * w / self.dz
+            if name not in self.bed_var:
+                faces[1:, i] = np.cumsum(flow * w)
+        return per_cell, faces
+
     def faces(self, x, inputs: BoundaryInputs | None = None):
         """Face temperatures and species flows from the unknowns ``x`` (..., n, nv), with the
         inlet values of ``inputs`` (default the kiln's own)."""
@@ -256,6 +285,8 @@ class KilnResidual:
         parts = [x[..., 1], t_in] if k.gas.counter_current else [t_in, x[..., 1]]
         tg = np.concatenate(parts, -1)
         qb = np.broadcast_to(u.feed, batch + (self.n + 1, len(self.bed_names))).copy()
+        if self.bed_sources:
+            qb += self.bed_source_faces
         i0 = self.i_species
         xb = x[..., i0 : i0 + self.nb]
         qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
@@ -501,6 +532,8 @@ class KilnResidual:
         if self.nb:
             qv = qb[..., self.bed_pos]
             net = qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]
+            if self.bed_sources:
+                net = net - dz * self.bed_source[:, self.bed_pos]
             if disp_species is not None:
                 net = net - disp_species[..., self.bed_pos]
             rb = net / self.bed_scale

@@ -95,7 +95,7 @@ __all__ = [
 ]
 
 #: How the fuel burns along the kiln (docs/flames.md).
-COMBUSTION_MODELS = ("instant", "burnout", "stirred")
+COMBUSTION_MODELS = ("instant", "burnout", "stirred", "particles")
 #: Peclet number u x_w / D of a stirred recirculation zone: well mixed (D = 10 u x_w).
 STIRRED_PECLET = 0.1
 PRODUCT_MODELS = ("equilibrium", "complete")
@@ -192,7 +192,9 @@ class Burner:
     exhaust leaving the feed end, outside the kiln's gas balance); ``products``
     (``equilibrium``: the products dissociate at equilibrium, their dissociation heat carried
     by the gas, :mod:`rotarykiln.materials.dissociation`; ``complete``: frozen complete
-    combustion products).
+    combustion products); ``fired``: solid and liquid fuels
+    (:class:`~rotarykiln.kiln.combustion.fired_fuels.FiredFuel`) fired with or without the
+    gaseous fuel (``fuel_flow`` may then be 0).
     """
 
     fuel: str
@@ -208,9 +210,18 @@ class Burner:
     ingress_at_burner: bool = False
     products: str = "equilibrium"
     recirculation_length: float | None = None
+    fired: tuple = ()
 
     def __post_init__(self):
-        check_positive("burner.fuel_flow", self.fuel_flow, "kg/s")
+        if self.fired:
+            if not np.isfinite(self.fuel_flow) or self.fuel_flow < 0:
+                raise InputError("burner.fuel_flow", self.fuel_flow, ">= 0 kg/s")
+        else:
+            check_positive("burner.fuel_flow", self.fuel_flow, "kg/s")
+        if self.combustion == "particles" and not any(f.state == "solid" for f in self.fired):
+            raise InputError(
+                "burner.combustion", "particles", "a burner firing a solid fuel (solid_fuels)"
+            )
         check_positive("burner.fuel_temperature", self.fuel_temperature, "K")
         if self.air_flow <= 0:
             raise InputError(
@@ -278,6 +289,9 @@ class Flame:
     combustion: str
     dissociation: object = None
     equilibrium_temperature: float | None = None
+    ash_flow: float = 0.0
+    fired_burnout: dict | None = None
+    release_table: object = None
 
     @property
     def adiabatic_temperature(self) -> float:
@@ -324,6 +338,10 @@ class Flame:
         """Weights of the heat release over cells (callable of cell centres z, m), or None."""
         if self.burns_at_inlet:
             return None
+        if self.release_table is not None:
+            from rotarykiln.kiln.combustion.fired_fuels import ReleaseTable
+
+            return ReleaseTable(*self.release_table, length, counter_current)
         return BurnoutProfile(length, float(self.flame_length), counter_current)
 
     def summary(self) -> dict:
@@ -349,6 +367,12 @@ class Flame:
         ):
             if value is not None:
                 out[key] = value
+        if self.burner.fired:
+            out["ash_to_bed_kg_s"] = self.ash_flow
+            comp = dict(self.products.composition)
+            out["SO2_mole_fraction_wet"] = comp.get("SO2", 0.0)
+            for label, x in (self.fired_burnout or {}).items():
+                out[f"burnout_{label}"] = x
         return out
 
 
@@ -361,15 +385,21 @@ class BurnoutProfile:
     counter_current: bool
 
     def __call__(self, z):
-        z = np.asarray(z, dtype=float)
-        if z.size == 1:
-            edges = np.array([0.0, self.length])
-        else:
-            mid = 0.5 * (z[1:] + z[:-1])
-            edges = np.concatenate([[0.0], mid, [self.length]])
-        x = (self.length - edges) if self.counter_current else edges
+        x = distance_from_burner(z, self.length, self.counter_current)
         xb = burnout_fraction(x / self.flame_length)
         return np.abs(np.diff(xb)) + 0.0
+
+
+def distance_from_burner(z, length: float, counter_current: bool) -> np.ndarray:
+    """Distance (m) from the burner of the cell faces around the cell centres ``z`` (m): the
+    burner at z = ``length`` (counter-current) or at z = 0."""
+    z = np.asarray(z, dtype=float)
+    if z.size == 1:
+        edges = np.array([0.0, length])
+    else:
+        mid = 0.5 * (z[1:] + z[:-1])
+        edges = np.concatenate([[0.0], mid, [length]])
+    return (length - edges) if counter_current else edges
 
 
 @lru_cache(maxsize=64)
@@ -469,6 +499,8 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     See the module docstring.
     """
     check_positive("kiln.diameter", kiln_diameter, "m")
+    if burner.fired:
+        return _fire_fired(burner, kiln_diameter, kiln_length)
     fuel = parse_composition(burner.fuel)
     mm_fuel, o2_demand, lhv, hhv = _fuel_data(fuel)
     air = sum(a.flow for a in burner.flame_air)
@@ -504,11 +536,7 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     x_w = jet["recirculation_length"]
     _check_length("recirculation", burner.recirculation_length, x_w, stirred, kiln_length)
     _check_length("flame", burner.flame_length, flame_length, burnout, kiln_length)
-    dissociation = t_eq = None
-    if burner.products == "equilibrium":
-        comp = [(k, x) for k, x in products.composition if k in DISSOCIATION_SPECIES]
-        dissociation = dissociation_heat(comp)
-        t_eq = equilibrium_adiabatic_temperature(comp, products.adiabatic_temperature)
+    dissociation, t_eq = _dissociation_of(burner, products)
     return Flame(
         burner=burner,
         products=products,
@@ -523,6 +551,16 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
         combustion=burner.combustion,
         **jet,
     )
+
+
+def _dissociation_of(burner: Burner, products):
+    """The dissociation heat of the products and their equilibrium adiabatic temperature (K),
+    or (None, None) with ``products: complete``."""
+    if burner.products != "equilibrium":
+        return None, None
+    comp = [(k, x) for k, x in products.composition if k in DISSOCIATION_SPECIES]
+    heat = dissociation_heat(comp)
+    return heat, equilibrium_adiabatic_temperature(comp, products.adiabatic_temperature)
 
 
 def _check_length(what: str, given, value, needed: bool, kiln_length) -> None:
@@ -588,3 +626,62 @@ def _adiabatic(fuel, fuel_flow, air_flow, burner, t_air, oxidiser=AIR) -> float:
     return burn_fuel(
         fuel, fuel_flow, air_flow, burner.fuel_temperature, t_air, oxidiser
     ).adiabatic_temperature
+
+
+def _fire_fired(burner: Burner, kiln_diameter: float, kiln_length: float | None) -> Flame:
+    """:func:`fire` for a burner firing solid or liquid fuels
+    (:mod:`rotarykiln.kiln.combustion.fired_fuels`): products by elements, no jet numbers (the
+    flame length of a gaseous jet does not hold for a particle-laden one: give
+    ``flame_length`` for the ``burnout`` model, or use ``particles``)."""
+    import dataclasses
+
+    from rotarykiln.kiln.combustion.fired_fuels import burn_fired_fuels, particle_release
+
+    products, lhv, hhv, o2_needed, ash = burn_fired_fuels(burner)
+    lam = sum(a.moles * a.o2_fraction for a in burner.flame_air) / o2_needed
+    p = burner.primary_air
+    lam_p = p.moles * p.o2_fraction / o2_needed
+    jet = dict.fromkeys(
+        ("equivalent_diameter", "nozzle_velocity", "thring_newby", "entrainment_length")
+    )
+    jet["recirculating"] = None
+    x_w = burner.recirculation_length
+    if burner.combustion == "stirred" and x_w is None and burner.nozzle_diameter is not None:
+        x_w = max(kiln_diameter / 2.0 - burner.nozzle_diameter / 2.0, 0.0) / JET_SPREAD
+    jet["recirculation_length"] = None if x_w is None else float(x_w)
+    _check_length(
+        "recirculation",
+        burner.recirculation_length,
+        x_w,
+        burner.combustion == "stirred",
+        kiln_length,
+    )
+    flame_length = burner.flame_length
+    if burner.combustion == "burnout" and flame_length is None:
+        raise InputError(
+            "burner.flame_length", None, "given (the burnout model of a solid or liquid fuel)"
+        )
+    _check_length("flame", burner.flame_length, flame_length, False, kiln_length)
+    dissociation, t_eq = _dissociation_of(burner, products)
+    sensible = products.mass_flow * float(products.table.enthalpy(products.inlet_temperature))
+    flame = Flame(
+        burner=burner,
+        products=products,
+        dissociation=dissociation,
+        equilibrium_temperature=t_eq,
+        fuel_lhv=lhv,
+        fuel_hhv=hhv,
+        sensible_input=sensible,
+        excess_air=lam - 1.0,
+        primary_excess_air=lam_p - 1.0,
+        flame_length=None if flame_length is None else float(flame_length),
+        combustion=burner.combustion,
+        ash_flow=ash,
+        **jet,
+    )
+    if burner.combustion != "particles":
+        return flame
+    if kiln_length is None:
+        raise InputError("kiln.length", None, "given (the particles model burns along the kiln)")
+    table, ends = particle_release(flame, kiln_diameter, kiln_length)
+    return dataclasses.replace(flame, release_table=table, fired_burnout=ends)

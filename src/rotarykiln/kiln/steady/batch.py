@@ -147,6 +147,8 @@ def same_structure(a: KilnResidual, b: KilnResidual) -> bool:
         return False
     if (ka.bed.dispersion > 0) != (kb.bed.dispersion > 0):
         return False
+    if a.bed_sources != b.bed_sources:  # a burner's ash: a source of its own
+        return False
     if _dissociation(ka) != _dissociation(kb):
         return False
     return _equal(ka, kb)

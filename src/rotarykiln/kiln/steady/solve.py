@@ -205,6 +205,8 @@ def finish_solution(
     gi, go = (-1, 0) if kiln.gas.counter_current else (0, -1)  # gas inlet and outlet faces
     inlets = {s: float(qb[0, i]) for i, s in enumerate(res.bed_names)}
     inlets.update({s: float(qg[gi, i]) for i, s in enumerate(res.gas_names)})
+    for name, flow in res.bed_sources.items():  # a burner's ash, fallen into the bed
+        inlets[name] += flow
     outlets = {s: float(max(qb[-1, i], 0.0)) for i, s in enumerate(res.bed_names)}
     outlets.update({s: float(max(qg[go, i], 0.0)) for i, s in enumerate(res.gas_names)})
     if check_balances:

@@ -111,14 +111,18 @@ def _flame_gas(burner, diameter, length, gas_names, dissociation=None):
     dissociation heat is the old products'.
     """
     from rotarykiln.kiln.combustion.flame import fire
-    from rotarykiln.materials.gas import molar_mass
+    from rotarykiln.kiln.from_case import gas_molar_mass
 
     flame = fire(burner, diameter, length)
     p = flame.products
+    if hasattr(p.table, "mass_fractions"):  # products made by elements (solid fuels): exact
+        given = dict(zip(p.table.names, p.table.mass_fractions, strict=True))
+        flows = np.array([p.mass_flow * given.get(s, 0.0) for s in gas_names])
+        return flows, float(flame.inlet_temperature), float(flame.heat_release)
     mass = {}
     for name, x in p.composition:
         key = name if name in gas_names else "N2"
-        mass[key] = mass.get(key, 0.0) + x * molar_mass(f"{name}:1")
+        mass[key] = mass.get(key, 0.0) + x * gas_molar_mass(name)
     total = sum(mass.values())
     flows = np.array([p.mass_flow * mass.get(s, 0.0) / total for s in gas_names])
     t_in = float(flame.inlet_temperature)
