@@ -1623,6 +1623,8 @@ def clinker_report(source, feed=None, species=None):
                 s = sp[name]
                 if q == 0.0:
                     continue
+                if s.h_f is None and _inert(s):
+                    continue  # lumped inert matter (ash): it takes no part in the reactions
                 if s.h_f is None:
                     raise InputError(f"species.{name}.h_f", None, "known (for the heat)")
                 h += sign * q / s.molar_mass * s.h_f
@@ -1644,3 +1646,8 @@ def clinker_report(source, feed=None, species=None):
         loss_on_ignition=loi,
         mass_flow=total,
     )
+
+
+def _inert(species) -> bool:
+    """Whether a species is lumped inert matter (only the Ash or Inert pseudo-elements)."""
+    return bool(species.elements) and set(species.elements) <= {"Ash", "Inert"}
