@@ -29,21 +29,6 @@ from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.steady.batch import solve_batch
 from rotarykiln.kiln.steady.solve import solve_kiln
 
-CASES = [
-    "tscheng_A16",
-    "barr_T2",
-    "barr_T3",
-    "barr_T4",
-    "barr_T6",
-    "barr_T9",
-    "ubc_pilot_flame",
-    "limestone_calcination",
-    "limestone_fired",
-    "charcoal_activation",
-    "charcoal_activation_kramers",
-    "rotary_pyrolysis",
-]
-
 
 def _test_module():
     """tests/kiln/steady/test_batch.py: its operating points and tolerances are the ones used
@@ -57,6 +42,7 @@ def _test_module():
 
 _TEST = _test_module()
 operating_points = _TEST.operating_points
+CASES = _TEST.KILN_CASES
 
 
 def compare(name: str, n: int) -> dict:
