@@ -548,7 +548,8 @@ class Burner(Section):
     ``solid_fuels``, ``liquid_fuels``: coal, petroleum coke, alternative fuels, fuel oil
     (:class:`FiredFuelSection` each), fired alone (``fuel_flow`` absent) or with the gaseous
     fuel; their ash falls into the bed. ``combustion: particles`` burns the solid fuels by
-    their particles' burn-out along the kiln (docs/cement_lime.md).
+    their particles' burn-out along the kiln (docs/cement_lime.md); ``particle_radiation``
+    (default true) then adds the burning particles' grey emissivity to the gas's.
     """
 
     fuel: Annotated[str, BeforeValidator(_fuel_composition)] = (
@@ -566,6 +567,7 @@ class Burner(Section):
     flame_length: Length | None = None
     recirculation_length: Length | None = None
     soot_volume_fraction: SootFraction = 0.0
+    particle_radiation: bool = True
     air_ingress: BurnerAir | None = None
     solid_fuels: list[FiredFuelSection] = Field(default_factory=list)
     liquid_fuels: list[FiredFuelSection] = Field(default_factory=list)

@@ -77,3 +77,37 @@ def test_wen_yen_conserves_mass():
 
 def test_berkovich_zero_below_onset():
     assert berkovich_conversion(700.0, 743.0, 21.71) == 0.0
+
+
+def test_calcination_in_the_bed_co2_starts_at_the_1_atm_equilibrium():
+    # co2_pressure: bed takes 1 atm of CO2 whatever the freeboard holds: no calcination below
+    # Baker's 1173.6 K, where the freeboard's 0.2 atm lets it run; above it, the Luisser rate
+    # times 1 - 1 atm / p_eq(T)
+    from rotarykiln.chemistry.mechanism import CellState, Mechanism
+
+    T = np.array([1100.0, 1150.0, 1250.0])
+    state = CellState.build(
+        T_bed=T,
+        T_gas=T + 300.0,
+        bed_mass_flow={"CaCO3": np.full(3, 1.0)},
+        bed_mass_per_length=np.full(3, 100.0),
+        partial_pressure={"CO2": np.full(3, 0.2 * 101325.0)},
+        bed_mass_flow_in={"CaCO3": 1.0},
+    )
+    freeboard = Mechanism.builtin("calcination_equilibrium").rates(state).reaction_rate[:, 0]
+    bed = Mechanism.builtin("calcination_bed_co2").rates(state).reaction_rate[:, 0]
+    assert np.all(freeboard > 0.0)
+    assert bed[0] == 0.0 and bed[1] == 0.0
+    kinetic = 100.0 * luisser_calcination_rate(1250.0, 0.0)  # kg/m hold-up x 1/s
+    drive = 1.0 - 101325.0 / baker_co2_equilibrium_pressure(1250.0)
+    assert bed[2] == pytest.approx(kinetic * drive, rel=1e-12)
+    assert bed[2] < freeboard[2]
+
+
+def test_co2_pressure_choice_is_checked():
+    from rotarykiln.chemistry.ratelaws import RATE_LAWS
+
+    law = RATE_LAWS["carbonate_equilibrium"]
+    assert law.validate_params({"co2_pressure": "bed"}, "r.rate", "CaCO3")["co2_pressure"] == "bed"
+    with pytest.raises(InputError, match="co2_pressure.*freeboard, bed"):
+        law.validate_params({"co2_pressure": "kiln"}, "r.rate", "CaCO3")

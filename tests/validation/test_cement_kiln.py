@@ -12,15 +12,15 @@ Computed at 200 cells (a check the case misses is an ``xfail(strict=True)`` with
 
 | quantity | computed | range | source | result |
 |---|---|---|---|---|
-| element closure; energy closure | 1.9e-16; 5.3e-12 | <= 1e-8; <= 1e-6 | the solver | pass |
+| element closure; energy closure | 1.7e-16; 6.6e-12 | <= 1e-8; <= 1e-6 | the solver | pass |
 | kiln-burner heat per t clinker | 1400 MJ/t (coal ash in the clinker) | 1200-1600 MJ/t (40 % of 3000-4000) | PHYS, CN60 | pass |
-| exhaust (kiln-inlet) gas | 1243 degC | 1000-1200 degC | MEMORY | xfail |
-| burning-zone material, peak bed | 1972 degC (at the discharge) | 1400-1450 degC | MEMORY | xfail |
-| burning-zone gas, mean over z = 45-68 m | 2099 degC (peak 2317) | 1700-2000 degC | MEMORY | xfail |
+| exhaust (kiln-inlet) gas | 1242 degC | 1000-1200 degC | MEMORY | xfail |
+| burning-zone material, peak bed | 1978 degC (at the discharge) | 1400-1450 degC | MEMORY | xfail |
+| burning-zone gas, mean over z = 45-68 m | 2091 degC (peak 2315) | 1700-2000 degC | MEMORY | xfail |
 | clinker free lime | 0.00 % | <= 2 % (held at about 1-2 % or less) | MEMORY (note 1.4) | pass |
 | clinker phases vs Bogue of its oxides | C3S 56.96, C2S 21.43, C3A 9.18, C4AF 10.26 % (Bogue the same) | within Taylor's spread of Bogue | TAY89 via CLK | pass |
-| shell under full coating (z = 45-68 m) | 272-308 degC | 200-300 degC | MEMORY | xfail |
-| shell, hottest | 424 degC (z = 40.1 m, coating starting) | < 350 degC | WIKIRK | xfail |
+| shell under full coating (z = 45-68 m) | 271-309 degC | 200-300 degC | MEMORY | xfail |
+| shell, hottest | 423 degC (z = 40.1 m, coating starting) | < 350 degC | WIKIRK | xfail |
 | shell loss / kiln-burner fuel (LHV) | 12.2 % | 5-15 % | FARAG, ENGIN (MAST: about 10 %) | pass |
 
 The burning zone is the stretch the case puts a priori under full coating (z = 45-68 m, the last
@@ -29,8 +29,10 @@ secondary air and the meal at 875 degC, the kiln receives about 0.7 MJ per kg of
 more than heating the clinker to 1450 degC, the residual calcination, the shell and an exhaust
 at 1100 degC take (the solution's energy sheet moved to those temperatures with mean heat
 capacities; the clinker reactions are exothermic, -0.31 MJ/kg from this feed); the model
-has no melt latent heat, no dust or bypass, no alkali cycle and no flame radiating as its own
-body, and the surplus heats bed, wall and exhaust. With the recalled constants the clinker burns
+has no melt latent heat, no dust or bypass and no alkali cycle, and the surplus heats bed, wall
+and exhaust. The burning coal particles radiate (their grey emissivity added to the gas's over
+the first metres from the burner, where they burn out at these temperatures): that moved the
+numbers by under 10 K, as the surplus, not the flame's emissivity, sets them. With the recalled constants the clinker burns
 through at that temperature: belite, aluminate and ferrite form in the first 0.5 m (the bed
 jumps from 1148 to 1460 K on their heat), alite from 1598 K at z = 19.8 m, the lime is 99 %
 combined at z = 41 m (bed 1968 K).
@@ -86,14 +88,14 @@ def test_cement_kiln_burner_heat_per_tonne(solved):
     assert 0.40 * 3000.0 <= q <= 0.40 * 4000.0, q
 
 
-@pytest.mark.xfail(strict=True, reason="exhaust 1243 degC (1517 K), above 1000-1200 degC")
+@pytest.mark.xfail(strict=True, reason="exhaust 1242 degC (1515 K), above 1000-1200 degC")
 def test_cement_kiln_exhaust_temperature(solved):
     _, _, sol = solved
     t = sol.exhaust["temperature_K"] - C
     assert 1000.0 <= t <= 1200.0, t
 
 
-@pytest.mark.xfail(strict=True, reason="peak bed 1972 degC (2245 K), above 1400-1450 degC")
+@pytest.mark.xfail(strict=True, reason="peak bed 1978 degC (2251 K), above 1400-1450 degC")
 def test_cement_kiln_burning_zone_material(solved):
     _, _, sol = solved
     t = float(np.max(sol.t_bed_nodes)) - C
@@ -101,7 +103,7 @@ def test_cement_kiln_burning_zone_material(solved):
 
 
 @pytest.mark.xfail(
-    strict=True, reason="burning-zone gas 2099 degC (mean, z = 45-68 m), above 1700-2000 degC"
+    strict=True, reason="burning-zone gas 2091 degC (mean, z = 45-68 m), above 1700-2000 degC"
 )
 def test_cement_kiln_burning_zone_gas(solved):
     _, _, sol = solved
@@ -125,7 +127,7 @@ def _shell_under_coating(case, sol):
     return np.asarray(sol.t_shell)[coating >= max(tk) - 1e-9] - C
 
 
-@pytest.mark.xfail(strict=True, reason="shell under full coating 272-308 degC, above 200-300 degC")
+@pytest.mark.xfail(strict=True, reason="shell under full coating 271-309 degC, above 200-300 degC")
 def test_cement_kiln_shell_under_coating(solved):
     case, _, sol = solved
     t = _shell_under_coating(case, sol)
@@ -134,7 +136,7 @@ def test_cement_kiln_shell_under_coating(solved):
 
 
 @pytest.mark.xfail(
-    strict=True, reason="hottest shell 424 degC (z = 40.1 m, coating starting), not < 350"
+    strict=True, reason="hottest shell 423 degC (z = 40.1 m, coating starting), not < 350"
 )
 def test_cement_kiln_shell_below_350(solved):
     _, _, sol = solved

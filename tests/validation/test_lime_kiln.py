@@ -35,6 +35,17 @@ outside it would be nearer the other end's number. The specific heat consumption
 firing (an input): its check shows the firing basis is consistent with the BREF, not that the
 model predicts it.
 
+The calcination takes the CO2 of the bed's voids (``calcination_bed_co2``, 1 atm: a deep bed
+of stones fills its voids with its own CO2), not the freeboard's: chosen after the first runs,
+which calcined at 804-847 degC under the freeboard's 0.14-0.24 atm, below the 900 degC where
+lime kilns are said to calcine (LRK, LIMEW); the choice is the physics of a stone bed, not a
+fit, and it is the case's only change since its first run.
+
+MCD's numbers do not close on their own: at the firing the case takes, the product at
+1100 degC and the exhaust at 900 degC (the near edges of the tolerance) need 3.4 % more heat
+than the fuel and the secondary air bring, before any shell loss
+(``test_the_source_numbers_do_not_close_at_this_firing``). A kiln at 6 GJ/t cannot show both.
+
 The ranges the case misses are marked ``xfail(strict=True)`` with the measured value: the
 discrepancies, not the inputs, are what these tests record (see the reasons and
 docs/cement_lime.md).
@@ -49,6 +60,8 @@ from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.chemistry.lime import lime_calcination_mass_balance
 from rotarykiln.commands.kiln_runs import run_kiln_case
+from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.results.product_balance import lime_kiln_balance
 
 C = 273.15  # K at 0 degC
@@ -99,8 +112,8 @@ def test_specific_heat_consumption_within_the_bref_range(balance):
 
 @pytest.mark.xfail(
     strict=True,
-    reason="the product is burnt through: residual CO2 about 3e-29 (LOI 0 %), not 0.5-1 % "
-    "(MCD): calcination ends 3 m before the discharge, and the lumped rate has no unburnt "
+    reason="the product is burnt through: residual CO2 about 2e-40 (LOI 0 %), not 0.5-1 % "
+    "(MCD): calcination ends 1.4 m before the discharge, and the lumped rate has no unburnt "
     "core of a 30 mm stone",
 )
 def test_residual_co2_of_the_product(balance):
@@ -109,7 +122,7 @@ def test_residual_co2_of_the_product(balance):
 
 @pytest.mark.xfail(
     strict=True,
-    reason="bed leaves at 1772 K (1499 degC), 299 K above the 1200 degC of MCD: the coal "
+    reason="bed leaves at 1661 K (1388 degC), 188 K above the 1200 degC of MCD: the coal "
     "burns out over the last metres, where the burnt lime passes under the flame",
 )
 def test_material_temperature_at_the_discharge(solution):
@@ -117,21 +130,48 @@ def test_material_temperature_at_the_discharge(solution):
     assert abs(t - 1200.0) <= MCD_TOLERANCE, t
 
 
+def test_the_source_numbers_do_not_close_at_this_firing(solution):
+    """MCD's temperatures, even at the near edges of their +-100 K, need more heat than the
+    case's firing (6.0 GJ/t, 10 % excess air) brings, before any shell loss: a first-law check
+    of the source with the kiln's own enthalpies, independent of the solved profiles (only
+    the inlet streams and the outlet flows of the mass balance enter).
+
+    Outlets: the product at 1100 degC with 1 % LOI, the exhaust at 900 degC (the solved
+    exhaust flows less the CO2 left in the stone), the calcination heat of the converted
+    CaCO3 as the solve counts it; inlets: the fuel's LHV and the secondary air's enthalpy.
+    """
+    case = load_case(builtin_case_path("lime_kiln"))
+    kiln, _ = kiln_from_case(case)
+    res = KilnResidual(kiln, 10)
+    x = 0.9864186541964807  # conversion at 1 % residual CO2 (test above)
+    caco3_in = case.operation.feed * 0.97
+    bed = {k: float(np.asarray(v)[-1]) for k, v in solution.bed_flows.items()}
+    gas = {k: float(np.asarray(v)[0]) for k, v in solution.gas_flows.items()}
+    left = caco3_in * (1.0 - x)
+    assert bed["CaCO3"] < 1e-12 * caco3_in  # the solve burns through: its CaO is all of it
+    bed["CaCO3"], bed["CaO"] = left, bed["CaO"] * x
+    gas["CO2"] -= left * 44.0095 / 100.0869  # CO2 kept by the stone
+    hb = res.bed_enthalpy(np.array(C + 1100.0))
+    hg = res.mixture.species_enthalpy(np.array(C + 900.0))
+    product = sum(hb[i] * bed[n] for i, n in enumerate(res.bed_names))
+    exhaust = sum(hg[i] * gas[n] for i, n in enumerate(res.gas_names))
+    sheet = solution.energy_sheet
+    needed = sheet["heat_to_solids_reaction_W"] * x + product + exhaust
+    brought = sheet["fuel_lhv_input_W"] + sheet["sensible_input_gas_W"]
+    # 22.40 MW needed against 21.66 MW brought: short by 3.4 % with no shell loss at all
+    assert needed > 1.02 * brought, (needed, brought)
+
+
 @pytest.mark.xfail(
     strict=True,
-    reason="gas leaves the feed end at 821 K (548 degC), 452 K below the 1000 degC of MCD",
+    reason="gas leaves the feed end at 839 K (566 degC), 434 K below the 1000 degC of MCD; "
+    "at the case's firing no kiln can (test_the_source_numbers_do_not_close_at_this_firing)",
 )
 def test_gas_temperature_at_the_feed_end(balance):
     t = balance["exhaust_temperature_K"] - C
     assert abs(t - 1000.0) <= MCD_TOLERANCE, t
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="bed at 804-847 degC from 1 % to 99 % conversion (z 34.7-57.0 m), below the "
-    "900-1200 degC of LRK: the rate's driving force takes the freeboard CO2 (0.14-0.24 atm, "
-    "Baker equilibrium at about 1060-1080 K), not the CO2 near 1 atm in the bed",
-)
 def test_material_temperature_in_the_calcining_zone(solution):
     s = solution.summary()
     z1, z99 = s["z_conversion_1pct_CaCO3_m"], s["z_conversion_99pct_CaCO3_m"]
@@ -142,8 +182,8 @@ def test_material_temperature_in_the_calcining_zone(solution):
 
 @pytest.mark.xfail(
     strict=True,
-    reason="hottest bed 1920 K (1647 degC) at z = 59.4 m, under the flame, after calcination "
-    "has ended: the mixed-cup flame gas reaches 2342 K and the burnt lime has no heat "
+    reason="hottest bed 1741 K (1468 degC) at z = 59.7 m, under the flame, after calcination "
+    "has ended: the mixed-cup flame gas reaches 2297 K and the burnt lime has no heat "
     "sink; LRK's lime-kiln material is 900-1200 degC",
 )
 def test_hottest_material_is_not_dead_burning(balance):
@@ -153,8 +193,8 @@ def test_hottest_material_is_not_dead_burning(balance):
 
 @pytest.mark.xfail(
     strict=True,
-    reason="shell up to 647 K (374 degC) at z = 59 m under the 2002 K inner wall of the flame "
-    "zone (200 mm brick, k 1.6 W/(m K), no coating), above WIKIRK's 350 degC",
+    reason="shell up to 650 K (377 degC) at z = 59.6 m under the 2031 K inner wall of the flame "
+    "zone (200 mm brick, k 1.6 W/(m K), no coating; the coal particles radiating to it), above WIKIRK's 350 degC",
 )
 def test_shell_temperature_below_350_degC(balance):
     t = balance["shell_max_temperature_K"] - C

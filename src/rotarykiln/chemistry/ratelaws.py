@@ -15,6 +15,7 @@ ahmad_drying               critical-moisture drying (seed 004)          drying_c
 heat_limited_drying        all bed heat evaporates at T_boil            bed_heat_input W/m
 luisser_calcination        Luisser rate (seed 004), no equilibrium      bed_mass_flow_in
 equilibrium_calcination    Luisser x (1 - p_CO2/p_eq), Baker p_eq       bed_mass_flow_in, p_CO2
+                           [p_CO2 of the bed's voids: ``co2_pressure``]
 ortiz_activation           Ortiz et al. steam activation, onset T       steam_mass_flow kg/s
 wen_yen                    kerogen 5-rate scheme, step 1..5             bed_mass_flow_in (3-5)
 arrhenius                  A (T/T_ref)^b exp(-E/RT) m'_basis prod p^n   (none)
@@ -371,11 +372,32 @@ def _luisser(ctx, basis, p):
     return _luisser_mass_rate(ctx, basis, p, "luisser_calcination")
 
 
+#: Where the driving force of a carbonate's decomposition takes its CO2 partial pressure:
+#: ``freeboard`` the gas over the bed (its local CO2), ``bed`` the gas in the bed's voids,
+#: taken as the bed's own CO2 at the kiln's total pressure (1 atm).
+CO2_PRESSURE_CHOICES = ("freeboard", "bed")
+
+
+def _co2_pressure(ctx, p):
+    """CO2 partial pressure the carbonate's driving force sees, Pa (``co2_pressure`` choice).
+
+    ``bed``: a calcining bed of stones fills its voids with the CO2 it releases, the air of the
+    freeboard displaced; the decomposition then needs the CO2 equilibrium pressure to exceed
+    the total pressure, 1 atm: 1173.6 K (900.5 degC) with Baker's equilibrium, where lime kilns
+    are said to calcine ("calcination >= about 900 degC (1 atm CO2)", cement_lime.md 4 and 6.2,
+    LRK, LIMEW). The limiting case of a deep bed of large stones; ``freeboard`` the one of a
+    thin layer of fine particles swept by the kiln gas.
+    """
+    if p.get("co2_pressure", "freeboard") == "bed":
+        return np.full(ctx.n, ATM)
+    return ctx.p("CO2")
+
+
 @register_rate_law(
     "equilibrium_calcination",
-    {"A": 9.8e4, "E": 142000.0, "order": 0.5, "equilibrium": "baker"},
+    {"A": 9.8e4, "E": 142000.0, "order": 0.5, "equilibrium": "baker", "co2_pressure": "freeboard"},
     "Luisser rate times (1 - p_CO2/p_eq)",
-    choices={"equilibrium": ("baker", "garcia_labiano")},
+    choices={"equilibrium": ("baker", "garcia_labiano"), "co2_pressure": CO2_PRESSURE_CHOICES},
     flow_order=lambda p: p["order"],
 )
 def _equilibrium_calcination(ctx, basis, p):
@@ -384,7 +406,7 @@ def _equilibrium_calcination(ctx, basis, p):
     drive = calcination_rate_with_equilibrium(
         ctx.T_bed,
         np.zeros(ctx.n),
-        ctx.p("CO2"),
+        _co2_pressure(ctx, p),
         A=1.0,
         E=0.0,
         order=0.0,
@@ -514,9 +536,12 @@ def _mass_action(ctx, basis, p):
 
 @register_rate_law(
     "carbonate_equilibrium",
-    {"A": 9.8e4, "E": 142000.0, "carbonate": "calcite"},
+    {"A": 9.8e4, "E": 142000.0, "carbonate": "calcite", "co2_pressure": "freeboard"},
     "r = A exp(-E/RT) m'_basis max(0, 1 - p_CO2/p_eq), p_eq of Holland & Powell (2011)",
-    choices={"carbonate": ("calcite", "magnesite", "dolomite_half", "dolomite_full")},
+    choices={
+        "carbonate": ("calcite", "magnesite", "dolomite_half", "dolomite_full"),
+        "co2_pressure": CO2_PRESSURE_CHOICES,
+    },
 )
 def _carbonate_equilibrium(ctx, basis, p):
     r"""First-order decomposition of a carbonate driven by its CO2 equilibrium.
@@ -531,6 +556,6 @@ def _carbonate_equilibrium(ctx, basis, p):
 
     T = np.clip(ctx.T_bed, 300.0, 2000.0)
     peq = np.asarray(holland_powell_co2_equilibrium_pressure(T, p["carbonate"]), dtype=float)
-    drive = np.maximum(1.0 - ctx.p("CO2") / np.maximum(peq, 1e-300), 0.0)
+    drive = np.maximum(1.0 - _co2_pressure(ctx, p) / np.maximum(peq, 1e-300), 0.0)
     k = p["A"] * np.exp(-p["E"] / (R_GAS * ctx.T_bed))
     return k * ctx.holdup(basis) * drive

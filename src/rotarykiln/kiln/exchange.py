@@ -47,6 +47,7 @@ from rotarykiln.heat.convection import (
 from rotarykiln.heat.gas_radiation import (
     combined_emissivity,
     johansson_wsgg_emissivity,
+    particle_cloud_emissivity,
     smith_wsgg_emissivity,
     soot_emissivity,
     wsgg_bands,
@@ -196,7 +197,9 @@ class CrossSectionExchange:
     bed-conductivity models); ``emissivity_law`` (a, b 1/K, min) for
     :math:`\\varepsilon_g = \\max(a + bT, min)`, which replaces the closure's gas emissivity when
     given; ``soot_fv`` (-, per cell, or None): the soot volume fraction of a luminous flame,
-    whose soot emissivity combines with the gas's.
+    whose soot emissivity combines with the gas's; ``particle_kappa`` (1/m, per cell, or
+    None): the absorption coefficient of a solid fuel's burning particles, a grey absorber
+    combined the same way.
 
     Examples
     --------
@@ -223,19 +226,27 @@ class CrossSectionExchange:
     bed: object
     emissivity_law: tuple[float, float, float] | None = None
     soot_fv: np.ndarray | None = None
+    particle_kappa: np.ndarray | None = None
 
     @classmethod
     def of(cls, kiln, grid, bed, emissivity_law=None) -> CrossSectionExchange:
         """For a kiln model with ``closures``, ``length``, ``radius``, ``omega``, ``eps_wall``
         and ``soot`` (f_v, z_start, z_end) or None: each cell's soot volume fraction is f_v
-        times the share of the cell inside the luminous zone."""
+        times the share of the cell inside the luminous zone; with ``particles`` (z, kappa)
+        each cell's particle absorption coefficient is kappa's mean over the cell (trapezoids
+        of the table)."""
         soot = kiln.firing.soot
         fv = None
+        lo, hi = grid.z_nodes[:-1], grid.z_nodes[1:]
         if soot is not None and soot[0] > 0:
             f_v, z0, z1 = soot
-            lo, hi = grid.z_nodes[:-1], grid.z_nodes[1:]
             inside = np.clip(np.minimum(hi, z1) - np.maximum(lo, z0), 0.0, None) / (hi - lo)
             fv = f_v * inside
+        kp = None
+        if kiln.firing.particles is not None:
+            z, kappa = (np.asarray(v, dtype=float) for v in kiln.firing.particles)
+            area = np.concatenate([[0.0], np.cumsum(0.5 * (kappa[1:] + kappa[:-1]) * np.diff(z))])
+            kp = (np.interp(hi, z, area) - np.interp(lo, z, area)) / (hi - lo)
         return cls(
             kiln.closures,
             grid,
@@ -246,6 +257,7 @@ class CrossSectionExchange:
             bed,
             emissivity_law,
             fv,
+            kp,
         )
 
     def __post_init__(self):
@@ -286,9 +298,8 @@ class CrossSectionExchange:
         if not c.radiation:
             return 0.0
         eps = self._molecular_emissivity(gas, t_gas, check)
-        if self.soot_fv is not None:
-            L = self.geometry.beam_length
-            eps_s = soot_emissivity(self.soot_fv, np.maximum(t_gas, 1.0), L)
+        eps_s = self.soot(t_gas)
+        if eps_s is not None:
             eps = combined_emissivity(eps, eps_s)
         return np.clip(eps, 0.0, EPS_GAS_MAX)
 
@@ -327,10 +338,17 @@ class CrossSectionExchange:
         return wsgg_bands(c.gas_emissivity, p_w, p_c, self.geometry.beam_length)
 
     def soot(self, t_gas):
-        """Grey soot emissivity (-) of a luminous zone per cell, or None."""
-        if self.soot_fv is None:
-            return None
-        return soot_emissivity(self.soot_fv, np.maximum(t_gas, 1.0), self.geometry.beam_length)
+        """Grey emissivity (-) per cell of the soot of a luminous zone and the burning
+        particles of a solid fuel together, :math:`1 - (1 - \\varepsilon_s)(1 -
+        \\varepsilon_p)`, or None without either."""
+        L = self.geometry.beam_length
+        eps = None
+        if self.soot_fv is not None:
+            eps = soot_emissivity(self.soot_fv, np.maximum(t_gas, 1.0), L)
+        if self.particle_kappa is not None:
+            eps_p = particle_cloud_emissivity(self.particle_kappa, L)
+            eps = eps_p if eps is None else combined_emissivity(eps, eps_p)
+        return eps
 
     def radiation(self, gas: FreeboardGas, t_gas, t_bed, t_wall, eps_gas=None, paths=False):
         """Net radiation absorbed by the exposed wall and the bed (W/m), by the

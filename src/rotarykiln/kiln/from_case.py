@@ -113,6 +113,7 @@ def _common(case, gas: dict) -> dict:
             profile=gas.get("heat_release_profile"),
             flame=gas.get("flame"),
             soot=gas.get("soot"),
+            particles=gas.get("particles"),
             stirred_zone=gas.get("stirred_zone"),
         ),
         closures=closures_from_case(case.closures),
@@ -353,6 +354,8 @@ def _inlet_gas(case) -> dict:
         p = flame.products
         if b.soot_volume_fraction > 0:
             out["soot"] = _luminous_zone(b, flame, length, case.operation.counter_current)
+        if b.particle_radiation and flame.particle_absorption is not None:
+            out["particles"] = _particle_cloud(flame, length, case.operation.counter_current)
         out.update(
             gas_in=_products_flows(p),
             gas_in_mole=p.composition,
@@ -406,6 +409,16 @@ def _luminous_zone(section, flame, length: float, counter_current: bool):
     lf = min(float(lf), length)
     zone = (length - lf, length) if counter_current else (0.0, lf)
     return (float(section.soot_volume_fraction), *zone)
+
+
+def _particle_cloud(flame, length: float, counter_current: bool):
+    """(z, kappa): the burning particles' absorption coefficient (1/m) at kiln positions z
+    (m, increasing) from the flame's table against the distance from the burner."""
+    x = np.asarray(flame.release_table[0], dtype=float)
+    kappa = np.asarray(flame.particle_absorption, dtype=float)
+    if counter_current:  # the burner at z = length
+        x, kappa = length - x[::-1], kappa[::-1]
+    return tuple(float(v) for v in x), tuple(float(v) for v in kappa)
 
 
 def _mass_flows(composition, flow: float) -> dict[str, float]:

@@ -10,6 +10,7 @@ bed.
 
 import warnings
 
+import numpy as np
 import pytest
 import yaml
 
@@ -19,6 +20,7 @@ from rotarykiln.errors import InputError
 from rotarykiln.kiln.combustion.fired_fuels import FiredFuel, burn_fired_fuels
 from rotarykiln.kiln.combustion.flame import AirStream, Burner, fire
 from rotarykiln.kiln.from_case import kiln_from_case
+from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.steady.solve import solve_kiln
 from rotarykiln.materials.gas import burn_fuel
 
@@ -253,3 +255,41 @@ def test_a_gas_fired_burner_has_no_ash_and_no_so2():
     b = Burner("CH4:1", 1e-3, AirStream(1e-3 * 17.2 * 1.1))
     f = fire(b, 0.4)
     assert f.ash_flow == 0.0 and "SO2" not in dict(f.products.composition)
+
+
+def test_burning_particles_radiate_from_the_burner_until_they_burn_out():
+    # kappa at the burner by hand: every size class fed at its feed size, N_i = m_i / m0_i
+    # particles a second in the products' volume flow at the flame's adiabatic temperature
+    from rotarykiln.chemistry.fuel_burnout import load_burnout_parameters
+    from rotarykiln.chemistry.species import default_species
+
+    case = _case(BURNERS["coal, particles"])
+    kiln, cells = kiln_from_case(case)
+    flame = kiln.firing.flame
+    coal = flame.burner.fired[0]
+    d, w = np.asarray(coal.size.sizes), np.asarray(coal.size.mass_fractions)
+    m0 = load_burnout_parameters().coal_density * np.pi * d**3 / 6.0
+    p = flame.products
+    mm = sum(x * default_species()[s].molar_mass for s, x in p.composition)
+    volume_flow = p.mass_flow / (101325.0 * mm / (8.314462618 * flame.adiabatic_temperature))
+    kappa0 = np.sum(coal.flow * w / m0 / volume_flow * np.pi * d**2 / 4.0)
+    assert flame.particle_absorption[0] == pytest.approx(kappa0, rel=1e-9)
+    assert flame.particle_absorption[-1] == 0.0  # burnt out before the kiln's end
+    # in the kiln: the burner is at the discharge (counter-current), the cells average kappa
+    z, kappa = kiln.firing.particles
+    assert z[0] == 0.0 and z[-1] == pytest.approx(case.kiln.length)
+    assert kappa[-1] == pytest.approx(kappa0, rel=1e-9)
+    kp = KilnResidual(kiln, cells).exchange.particle_kappa
+    assert kp[-1] > 0.0 and kp[0] == 0.0
+    dz = case.kiln.length / cells
+    integral = np.sum(0.5 * (np.asarray(kappa[1:]) + kappa[:-1]) * np.diff(z))
+    assert np.sum(kp * dz) == pytest.approx(integral, rel=1e-9)
+    # switched off: no cloud; on, the flame gas loses its heat sooner (a lower peak)
+    off = _case(dict(BURNERS["coal, particles"], particle_radiation=False))
+    kiln_off, _ = kiln_from_case(off)
+    assert kiln_off.firing.particles is None
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        on_sol, off_sol = solve_kiln(kiln, cells), solve_kiln(kiln_off, cells)
+    assert abs(on_sol.energy_closure) <= 1e-6 and abs(off_sol.energy_closure) <= 1e-6
+    assert np.max(on_sol.t_gas_nodes) < np.max(off_sol.t_gas_nodes)

@@ -62,6 +62,10 @@ FUEL_STATES = ("solid", "liquid")
 SPECIFIC_HEAT = {"solid": 1250.0, "liquid": 2000.0}
 #: Burn-out at the kiln's end below which a fuel is refused (its char not followed).
 BURNOUT_REQUIRED = 0.999
+#: Absorption efficiency of burning coal and char particles, Q_abs: 1, the large-particle
+#: limit (cement_lime.md 5.5: Q_abs about 1 [TEXTBOOK, Modest]; OpenFOAM's coal tutorial sets
+#: the particle emissivity to 1 [SEEN: OFT]). Scattering is not counted.
+PARTICLE_ABSORPTION = 1.0
 #: Products of complete combustion, by element (mol of product per mol of element).
 _PRODUCT_OF = {"C": ("CO2", 1.0), "H": ("H2O", 0.5), "S": ("SO2", 1.0), "N": ("N2", 0.5)}
 _ATOMIC = {"C": 0.012011, "H": 0.001008, "O": 0.015999, "N": 0.014007, "S": 0.03206}
@@ -347,9 +351,13 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
 
     Returns
     -------
-    (tuple, dict)
+    (tuple, dict, tuple)
         (distances from the burner (m), cumulative release (-)), the table of
-        :class:`ReleaseTable`; and per fuel its burn-out at the kiln's end (-).
+        :class:`ReleaseTable`; per fuel its burn-out at the kiln's end (-); and the
+        absorption coefficient of the burning particles at the same distances (1/m):
+        :math:`\kappa_p = \sum Q_{abs} N_i \pi d_i^2/4` over the fuels and their size
+        classes, :math:`N_i` the class's particles fed per second over :math:`u \pi D^2/4`,
+        :math:`d_i` their burning diameter, :math:`Q_{abs}` = ``PARTICLE_ABSORPTION``.
 
     Raises
     ------
@@ -368,9 +376,11 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
     >>> coal = FiredFuel(load_kiln_fuel("pittsburgh_8"), 0.643, size=psd, label="coal")
     >>> b = Burner("CH4:1", 0.0, AirStream(0.707), AirStream(6.36, 650.0), fired=(coal,),
     ...            combustion="particles")
-    >>> (x, released), ends = particle_release(fire(b, 2.6, 60.0), 2.6, 60.0)
+    >>> (x, released), ends, kappa = particle_release(fire(b, 2.6, 60.0), 2.6, 60.0)
     >>> ends["coal"] > 0.999, released[-1], bool(np.all(np.diff(released) >= 0))
     (True, 1.0, True)
+    >>> round(kappa[0], 2), kappa[-1]  # 1/m: at the burner, and burnt out at the far end
+    (1.07, 0.0)
 
     References
     ----------
@@ -379,6 +389,7 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
     :func:`rotarykiln.chemistry.fuel_burnout.pulverised_fuel_burnout`).
     """
     from rotarykiln.chemistry.fuel_burnout import pulverised_fuel_burnout
+    from rotarykiln.heat.gas_radiation import particle_absorption_coefficient
     from rotarykiln.materials.gas import R_UNIVERSAL
 
     p = flame.products
@@ -389,6 +400,7 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
     x_o2 = dict(p.composition).get("O2", 0.0)
     x = np.linspace(0.0, kiln_length, 401)
     released = np.zeros_like(x)
+    kappa = np.zeros_like(x)
     total = 0.0
     ends: dict[str, float] = {}
     liquid = 0.0
@@ -414,6 +426,8 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
             )
         released += q
         total += float(q[-1])
+        density = r.particle_number_flow / (u * np.pi * kiln_diameter**2 / 4.0)  # 1/m3
+        kappa += particle_absorption_coefficient(density, r.particle_diameter, PARTICLE_ABSORPTION)
     if flame.burner.fuel_flow > 0 or liquid > 0:
         # gaseous and liquid fuels burn in the gas, as the mixing-limited flame
         from rotarykiln.heat.flames import burnout_fraction
@@ -427,7 +441,8 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
         xb = burnout_fraction(np.minimum(x / float(flame.flame_length), 1.0))
         released = released + (flame.heat_release - total) * xb
     cumulative = released / released[-1]
-    return (tuple(float(v) for v in x), tuple(float(v) for v in cumulative)), ends
+    table = (tuple(float(v) for v in x), tuple(float(v) for v in cumulative))
+    return table, ends, tuple(float(v) for v in kappa)
 
 
 def _molar(species: str) -> float:

@@ -269,7 +269,10 @@ class Flame:
     (None without a nozzle diameter): ``equivalent_diameter`` (m), ``nozzle_velocity`` (m/s),
     ``thring_newby`` (-), ``entrainment_length`` (m), ``recirculation_length`` (m),
     ``recirculating`` (bool); ``flame_length`` (m, given, or Hawthorne-Weddell-Hottel, or
-    None); ``combustion`` (model name).
+    None); ``combustion`` (model name); with ``combustion: particles`` the solid fuels'
+    burn-out per fuel (``fired_burnout``), the cumulative heat release against the distance
+    from the burner (``release_table``) and the burning particles' absorption coefficient
+    (1/m) at the same distances (``particle_absorption``).
     """
 
     burner: Burner
@@ -292,6 +295,7 @@ class Flame:
     ash_flow: float = 0.0
     fired_burnout: dict | None = None
     release_table: object = None
+    particle_absorption: tuple | None = None
 
     @property
     def adiabatic_temperature(self) -> float:
@@ -683,5 +687,7 @@ def _fire_fired(burner: Burner, kiln_diameter: float, kiln_length: float | None)
         return flame
     if kiln_length is None:
         raise InputError("kiln.length", None, "given (the particles model burns along the kiln)")
-    table, ends = particle_release(flame, kiln_diameter, kiln_length)
-    return dataclasses.replace(flame, release_table=table, fired_burnout=ends)
+    table, ends, kappa = particle_release(flame, kiln_diameter, kiln_length)
+    return dataclasses.replace(
+        flame, release_table=table, fired_burnout=ends, particle_absorption=kappa
+    )

@@ -162,7 +162,9 @@ class Firing:
     None: uniform); ``flame``: the :class:`~rotarykiln.kiln.combustion.flame.Flame` of the
     burner (heating values and jet numbers for the energy sheet and the summary); ``soot``:
     (f_v, z_start, z_end), a luminous zone of soot volume fraction f_v between z_start and
-    z_end (m), whose grey soot emissivity adds to the gas's; ``stirred_zone``: (z_start, z_end,
+    z_end (m), whose grey soot emissivity adds to the gas's; ``particles``: (z, kappa), the
+    absorption coefficient of a solid fuel's burning particles (1/m) at the kiln positions z
+    (m, increasing), a grey absorber added to the gas's like soot; ``stirred_zone``: (z_start, z_end,
     K), the burner's recirculation zone, a well-stirred gas whose nodes exchange heat by an
     axial conductance K (W m/K).
     """
@@ -171,10 +173,16 @@ class Firing:
     profile: Callable | None = None
     flame: object | None = None
     soot: tuple[float, float, float] | None = None
+    particles: tuple[tuple, tuple] | None = None
     stirred_zone: tuple[float, float, float] | None = None
 
     def __post_init__(self):
         check_nonnegative("burner.heat_release", self.heat_release, "W")
+        if self.particles is not None:
+            z, kappa = (np.asarray(v, dtype=float) for v in self.particles)
+            if z.shape != kappa.shape or z.size < 2 or np.any(np.diff(z) <= 0):
+                raise InputError("burner.particles", z.size, "increasing positions, one kappa each")
+            check_nonnegative("burner.particles kappa", float(np.min(kappa)), "1/m")
         if self.soot is not None:
             check_range("burner.soot_volume_fraction", self.soot[0], 0.0, 1e-4, closed_high=True)
 

@@ -91,11 +91,19 @@ def scaled(F, scales):
     return functools.partial(F.evaluate, scales=scales)
 
 
-def ramp(scales_at: Callable[[float], object], steps=FIXED_STEPS, *, adaptive=False):
+def ramp(
+    scales_at: Callable[[float], object],
+    steps=FIXED_STEPS,
+    *,
+    adaptive=False,
+    max_failures: int | None = None,
+):
     """A continuation stage: the residual solved at ``scales_at(value)`` (its
     :class:`~rotarykiln.kiln.inputs.boundary.Scales`) for ``value`` over ``steps`` (fixed
     values), or from 0 to 1 in adaptive steps (start 0.25, halved on failure down to 1/256,
-    doubled on success up to 0.5) when ``adaptive``. Returns a callable
+    doubled on success up to 0.5) when ``adaptive``; ``max_failures`` failed steps end an
+    adaptive stage with the last failure (a start on a coarse grid, where stalling at a fold
+    costs more than the fine grid's own continuation). Returns a callable
     ``stage(F, x, scale, kw) -> (x, iters)``.
     """
 
@@ -108,7 +116,7 @@ def ramp(scales_at: Callable[[float], object], steps=FIXED_STEPS, *, adaptive=Fa
         return x, total
 
     def stepped(F, x, scale, kw):
-        total, lam, step = 0, 0.0, 0.25
+        total, lam, step, failures = 0, 0.0, 0.25, 0
         while lam < 1.0:
             trial = min(1.0, lam + step)
             log.info("continuation: parameter %.4g (step %.4g)", trial, step)
@@ -116,7 +124,8 @@ def ramp(scales_at: Callable[[float], object], steps=FIXED_STEPS, *, adaptive=Fa
                 x_new, rep = newton.newton_banded(scaled(F, scales_at(trial)), x, scale, **kw)
             except ConvergenceError:
                 step /= 2.0
-                if step < 1.0 / 256:
+                failures += 1
+                if step < 1.0 / 256 or (max_failures is not None and failures >= max_failures):
                     raise
                 continue
             total += rep.iterations
@@ -205,7 +214,7 @@ def newton_sequenced(
     Returns ``(x, Newton iterations on the grid of F)``.
     """
     if F.n > min_cells:
-        coarse_kw = dict(kw, tol=coarse_tol, where=None)
+        coarse_kw = dict(kw, tol=coarse_tol, where=None, max_iter=min(kw.get("max_iter", 60), 25))
 
         def solved(R, x_start):
             """Unknowns of R (Newton from a sequenced start), None if Newton fails."""

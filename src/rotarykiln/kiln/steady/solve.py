@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from rotarykiln.chemistry.balance import ELEMENT_RTOL, check_stream_balance
@@ -29,6 +31,10 @@ RATE_CAP_MARGIN = 200.0
 #: Grid sequencing (steady.newton_sequenced) for kilns with reactions, and for inert kilns
 #: above this many cells (below it the linear guess converges in ~7 Newton steps anyway).
 SEQUENCE_INERT_MIN = 200
+#: Failed steps after which an adaptive continuation stage on the coarse grid of the sequence
+#: gives up (the fine grid then solves from the guess, with its own continuation if needed):
+#: a coarse grid stalling at a fold costs more than that (the lime kiln: 10 s in 30 failures).
+COARSE_FAILURES = 6
 
 
 def _initial_guess(res: KilnResidual) -> np.ndarray:
@@ -129,7 +135,7 @@ def solve_kiln(
             q_ref,
             _continuation(res),
             make_residual=make_residual,
-            continuation_of=_continuation,
+            continuation_of=functools.partial(_continuation, max_failures=COARSE_FAILURES),
             **kw,
         )
     else:
@@ -438,21 +444,22 @@ def _residence_time(res: KilnResidual, geo, qb) -> float:
     return float(np.sum(rho * geo.bed_area / m) * res.dz)
 
 
-def _continuation(res: KilnResidual):
+def _continuation(res: KilnResidual, max_failures: int | None = None):
     """Reaction rates off (with radiation and the heat release ramped 0 -> 1 if needed), then
     the rates ramped 0 -> 1 in adaptive steps; if that fails, the full rates with the
     temperature they see ramped from just above the feed to the hottest source. Each stage
-    solves the residual at its :class:`~rotarykiln.kiln.inputs.boundary.Scales`."""
+    solves the residual at its :class:`~rotarykiln.kiln.inputs.boundary.Scales`; an adaptive
+    stage gives up after ``max_failures`` failed steps (None: down to the smallest step)."""
     t_low = res.kiln.feed.temperature + RATE_CAP_START
     t_high = res.hottest_source() + RATE_CAP_MARGIN
     radiation_ramp = steady.ramp(lambda v: Scales(reaction=0.0, radiation=v, release=v))
-    reactions = steady.ramp(lambda v: Scales(reaction=v), adaptive=True)
+    reactions = steady.ramp(lambda v: Scales(reaction=v), adaptive=True, max_failures=max_failures)
 
     def capped(value):
         cap = np.inf if value >= 1.0 else t_low + value * (t_high - t_low)
         return Scales(rate_temperature_cap=cap)
 
-    temperatures = steady.ramp(capped, adaptive=True)
+    temperatures = steady.ramp(capped, adaptive=True, max_failures=max_failures)
 
     def run(F, x0, scale, kw):
         off = steady.scaled(F, Scales(reaction=0.0))
