@@ -372,9 +372,10 @@ class FuelBurnoutResult:
     particle_number_flow : ndarray (n_classes,), 1/s
         Particles fed per second in each size class (fuel flow in the class / particle mass).
     particle_diameter : ndarray (n_z, n_classes), m
-        Diameter of a sphere holding what the particle still carries: its moisture,
-        undevolatilised fuel and ash at the coal density and its char at the char density
-        (the feed size at the start; 0 once burnt out, its ash gone): what radiates (:func:`~rotarykiln.heat.gas_radiation.\
+        Diameter of a sphere holding the particle's combustible: its undevolatilised fuel at
+        the coal density and its char at the char density (moisture and ash not counted: the
+        feed size times the cube root of the dry ash-free fraction at the start; 0 once burnt
+        out): what radiates (:func:`~rotarykiln.heat.gas_radiation.\
 particle_absorption_coefficient`).
     unburnt_combustible : float, kg/s
         Combustible left at the end (char + raw fuel).
@@ -891,11 +892,9 @@ def pulverised_fuel_burnout(
     left = raw * H_daf + char @ h_el - h_w * flow(Y[iW])
     en_err = float(np.max(np.abs(q_cum + left - heat_fed))) / abs(heat_fed)
     comb_class = Y[iR] + Y[iC:iB].sum(axis=0)  # (N, nz)
-    burning = comb_class > 1e-6 * daf  # the ash leaves with the last combustible
     volume = m0[:, None] * (
-        (np.maximum(Y[iW], 0.0) + np.maximum(Y[iR], 0.0) + A0 * burning) / P.coal_density
-        + np.maximum(Y[iC:iB], 0.0).sum(axis=0) / rho_char
-    )  # m3 per particle, (N, nz): d0 at the start
+        np.maximum(Y[iR], 0.0) / P.coal_density + np.maximum(Y[iC:iB], 0.0).sum(axis=0) / rho_char
+    )  # m3 per particle, (N, nz)
     burnout_class = 1.0 - comb_class / daf
     return FuelBurnoutResult(
         z=path["z"],

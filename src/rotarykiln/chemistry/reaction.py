@@ -334,7 +334,7 @@ def builtin_reactions(species: SpeciesTable | None = None) -> dict[str, Reaction
     Examples
     --------
     >>> [n for n in sorted(builtin_reactions()) if n.startswith("calcination")]
-    ['calcination_equilibrium', 'calcination_luisser']
+    ['calcination_bed_co2', 'calcination_equilibrium', 'calcination_luisser']
     """
     out: dict[str, Reaction] = {}
     for p in sorted(REACTIONS_DIR.glob("*.yaml")):

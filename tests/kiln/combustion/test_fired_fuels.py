@@ -258,8 +258,9 @@ def test_a_gas_fired_burner_has_no_ash_and_no_so2():
 
 
 def test_burning_particles_radiate_from_the_burner_until_they_burn_out():
-    # kappa at the burner by hand: every size class fed at its feed size, N_i = m_i / m0_i
-    # particles a second in the products' volume flow at the flame's adiabatic temperature
+    # kappa at the burner by hand: every size class's combustible (the dry ash-free fuel at
+    # the coal density: its feed size x daf^(1/3)), N_i = m_i / m0_i particles a second in the
+    # products' volume flow at the flame's adiabatic temperature
     from rotarykiln.chemistry.fuel_burnout import load_burnout_parameters
     from rotarykiln.chemistry.species import default_species
 
@@ -272,7 +273,9 @@ def test_burning_particles_radiate_from_the_burner_until_they_burn_out():
     p = flame.products
     mm = sum(x * default_species()[s].molar_mass for s, x in p.composition)
     volume_flow = p.mass_flow / (101325.0 * mm / (8.314462618 * flame.adiabatic_temperature))
-    kappa0 = np.sum(coal.flow * w / m0 / volume_flow * np.pi * d**2 / 4.0)
+    u_ar = coal.fuel.ultimate("ar")
+    d_burning = d * np.cbrt(1.0 - u_ar["moisture"] - u_ar["ash"])
+    kappa0 = np.sum(coal.flow * w / m0 / volume_flow * np.pi * d_burning**2 / 4.0)
     assert flame.particle_absorption[0] == pytest.approx(kappa0, rel=1e-9)
     assert flame.particle_absorption[-1] == 0.0  # burnt out before the kiln's end
     # in the kiln: the burner is at the discharge (counter-current), the cells average kappa

@@ -380,7 +380,7 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
     >>> ends["coal"] > 0.999, released[-1], bool(np.all(np.diff(released) >= 0))
     (True, 1.0, True)
     >>> round(kappa[0], 2), kappa[-1]  # 1/m: at the burner, and burnt out at the far end
-    (1.07, 0.0)
+    (1.21, 0.0)
 
     References
     ----------
