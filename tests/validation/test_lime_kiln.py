@@ -39,7 +39,8 @@ The calcination takes the CO2 of the bed's voids (``calcination_bed_co2``, 1 atm
 of stones fills its voids with its own CO2), not the freeboard's: chosen after the first runs,
 which calcined at 804-847 degC under the freeboard's 0.14-0.24 atm, below the 900 degC where
 lime kilns are said to calcine (LRK, LIMEW); the choice is the physics of a stone bed, not a
-fit, and it is the case's only change since its first run.
+fit. The case's other change since its first run is its cell count (100 -> 200, where Newton
+converges once the coal particles radiate; see its header).
 
 MCD's numbers do not close on their own: at the firing the case takes, the product at
 1100 degC and the exhaust at 900 degC (the near edges of the tolerance) need 3.4 % more heat
