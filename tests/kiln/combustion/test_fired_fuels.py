@@ -211,8 +211,11 @@ def test_particles_model_reports_the_burnout_and_refuses_a_grind_that_does_not_b
     coarse["solid_fuels"] = [
         {"library": "pittsburgh_8", "flow": "4.2 kg/h", "fineness": {"x_prime": "3 mm", "n": 1.1}}
     ]
-    with pytest.raises(InputError, match=r"solid_fuels\[0\].fineness.*burn-out"):
+    with pytest.raises(InputError, match=r"solid_fuels\[0\].fineness.*burn-out") as refused:
         kiln_from_case(_case(coarse))
+    # the message names the O2 the char burns in (the products'), the other way to burn it out
+    x_o2 = dict(kiln.firing.flame.products.composition)["O2"]
+    assert f"here {100.0 * x_o2:.2g} mol%" in str(refused.value)
 
 
 @pytest.mark.parametrize(

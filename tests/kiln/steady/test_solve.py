@@ -264,3 +264,67 @@ def test_a_kiln_hot_enough_to_react_at_once_converges(monkeypatch):
     assert abs(sol.energy_closure) < 1e-6  # ... and the converged solve is uncapped
     assert max(sol.element_closure.values()) < 1e-8
     assert sol.summary()["conversion_wood"] > 0.999
+
+
+def test_an_adaptive_ramp_solves_its_steps_loosely_and_its_end_to_the_tolerance(monkeypatch):
+    # the intermediate values of an adaptive continuation are starts (STEP_TOL, at most
+    # STEP_MAX_ITER iterations); the last is solved to the caller's tolerance
+    from rotarykiln.kiln.steady import continuation as cont
+
+    seen = []
+
+    def record(F, x, scale, **kw):
+        seen.append((F.keywords["scales"].reaction, kw["tol"], kw["max_iter"]))
+        return x, cont.newton.NewtonReport(1, 0.0, (0.0,), 1)
+
+    monkeypatch.setattr(cont.newton, "newton_banded", record)
+
+    class Residual:
+        def evaluate(self, x, scales):
+            return x
+
+    from rotarykiln.kiln.inputs.boundary import Scales
+
+    stage = cont.ramp(lambda v: Scales(reaction=v), adaptive=True)
+    stage(Residual(), np.zeros((3, 2)), 1.0, {"tol": 1e-11, "max_iter": 60})
+    assert [s[0] for s in seen] == [0.25, 0.75, 1.0]
+    assert seen[:-1] == [(0.25, cont.STEP_TOL, cont.STEP_MAX_ITER), (0.75, 1e-6, 12)]
+    assert seen[-1] == (1.0, 1e-11, 60)
+
+
+def test_a_hot_feed_ramps_its_rate_temperature_from_below_its_own(monkeypatch):
+    # a meal fed at 875 degC: the rates first see at most RATE_CAP_FLOOR, not the feed + 50 K
+    from rotarykiln.kiln.steady import solve as solve_mod
+
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("cement_kiln")))
+    caps = []
+    real_ramp = solve_mod.steady.ramp
+
+    def spy(scales_at, *args, **kwargs):
+        caps.append(scales_at(0.0).rate_temperature_cap)
+        return real_ramp(scales_at, *args, **kwargs)
+
+    monkeypatch.setattr(solve_mod.steady, "ramp", spy)
+    solve_mod._continuation(solve_mod.KilnResidual(kiln, 10))
+    assert kiln.feed.temperature + solve_mod.RATE_CAP_START > 1190.0
+    assert solve_mod.RATE_CAP_FLOOR in caps
+
+
+MORE_FUEL = {"burner.solid_fuels.0.flow": "2.532 kg/s"}
+
+
+@pytest.mark.parametrize(
+    "overrides", [MORE_FUEL, {**MORE_FUEL, "operation.feed": "56.33 kg/s"}], ids=["fuel", "both"]
+)
+def test_the_cement_kiln_solves_with_ten_percent_more_fuel_or_fuel_and_feed(overrides):
+    # both failed (bed C4AF flow) while the rate-temperature ramp started at the meal's 875 degC
+    # + 50 K, where the recalled clinker rates are already ~1e7 times the flows per cell
+    from rotarykiln.api import load_case as load_with
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kiln, cells = kiln_from_case(load_with("cement_kiln", overrides))
+        sol = solve_kiln(kiln, cells)
+    assert abs(sol.energy_closure) < 1e-6
+    assert max(sol.element_closure.values()) < 1e-8
+    assert sol.bed_flows["CaCO3"][-1] < 1e-6 * kiln.feed.flows["CaCO3"]

@@ -422,7 +422,9 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
             raise InputError(
                 f"burner.{f.label}.fineness",
                 f"burn-out {ends[f.label]:.4g} at the kiln's end",
-                f">= {BURNOUT_REQUIRED} (a finer grind: the unburnt char is not followed)",
+                f">= {BURNOUT_REQUIRED}: the char burns in the products' O2, here "
+                f"{100.0 * x_o2:.2g} mol% (more excess air or a finer grind; the unburnt char "
+                "is not followed)",
             )
         released += q
         total += float(q[-1])

@@ -25,8 +25,12 @@ SPECIES_STEP_FLOOR = 1e-6
 #: Bed temperature (K) above which the initial guess holds no liquid water (boiling drying).
 BOILING_GUESS = 373.15
 #: Rate-temperature continuation (the last fallback): the rates first see at most the feed
-#: temperature plus RATE_CAP_START, then up to the hottest source plus RATE_CAP_MARGIN, K.
+#: temperature plus RATE_CAP_START, or RATE_CAP_FLOOR if lower, then up to the hottest source
+#: plus RATE_CAP_MARGIN, K. A hot feed (a precalcined meal at 875 degC) can react at once at
+#: its own temperature (the clinker rates): its ramp starts where Arrhenius rates are still
+#: negligible (at 500 K a rate of E = 100 kJ/mol is 1e-8 of its value at 1000 K).
 RATE_CAP_START = 50.0
+RATE_CAP_FLOOR = 500.0
 RATE_CAP_MARGIN = 200.0
 #: Grid sequencing (steady.newton_sequenced) for kilns with reactions, and for inert kilns
 #: above this many cells (below it the linear guess converges in ~7 Newton steps anyway).
@@ -447,10 +451,11 @@ def _residence_time(res: KilnResidual, geo, qb) -> float:
 def _continuation(res: KilnResidual, max_failures: int | None = None):
     """Reaction rates off (with radiation and the heat release ramped 0 -> 1 if needed), then
     the rates ramped 0 -> 1 in adaptive steps; if that fails, the full rates with the
-    temperature they see ramped from just above the feed to the hottest source. Each stage
+    temperature they see ramped from just above the feed (at most RATE_CAP_FLOOR) to the
+    hottest source. Each stage
     solves the residual at its :class:`~rotarykiln.kiln.inputs.boundary.Scales`; an adaptive
     stage gives up after ``max_failures`` failed steps (None: down to the smallest step)."""
-    t_low = res.kiln.feed.temperature + RATE_CAP_START
+    t_low = min(res.kiln.feed.temperature + RATE_CAP_START, RATE_CAP_FLOOR)
     t_high = res.hottest_source() + RATE_CAP_MARGIN
     radiation_ramp = steady.ramp(lambda v: Scales(reaction=0.0, radiation=v, release=v))
     reactions = steady.ramp(lambda v: Scales(reaction=v), adaptive=True, max_failures=max_failures)
