@@ -52,6 +52,33 @@ def test_squared_unknowns_never_cross_zero():
     assert min(float(np.min(v)) for v in seen) > 0.0
 
 
+def test_a_stalling_solve_gives_up_after_its_stall_iterations_and_a_slow_one_goes_on():
+    F = _first_order_reactant(2.0)
+    calls = []
+
+    def G(x):
+        calls.append(1)
+        return F(x)
+
+    kw = dict(tol=1e-14, temperature_vars=0, step_floor=1e-12, max_iter=200)
+    # Newton in s is slow here (it halves s per step) but keeps lowering the residual: a stall
+    # test it passes goes on to convergence ...
+    _, rep = newton_banded(G, np.full((40, 1), 0.5), 1.0, stall=(3, 0.9), **kw)
+    assert rep.residual <= 1e-14 and rep.iterations > 3
+    # ... one it fails gives up at its iteration count, not at max_iter: exp(x) falls by e per
+    # Newton step (dx = -1), 55-fold in 4 steps, and reaches 1e-10 only after 25
+
+    def H(x):
+        return np.exp(x)
+
+    kw = dict(tol=1e-10, temperature_vars=0, max_iter=60)
+    _, slow = newton_banded(H, np.ones((5, 1)), 1.0, **kw)
+    assert slow.iterations == 25
+    with pytest.raises(ConvergenceError) as failed:
+        newton_banded(H, np.ones((5, 1)), 1.0, stall=(4, 1e-2), **kw)
+    assert failed.value.diagnostics["iterations"] == 4
+
+
 def test_failed_solve_still_raises():
     def F(x):
         return x * x + 1.0  # no real root

@@ -266,15 +266,16 @@ def test_a_kiln_hot_enough_to_react_at_once_converges(monkeypatch):
     assert sol.summary()["conversion_wood"] > 0.999
 
 
-def test_an_adaptive_ramp_solves_its_steps_loosely_and_its_end_to_the_tolerance(monkeypatch):
-    # the intermediate values of an adaptive continuation are starts (STEP_TOL, at most
-    # STEP_MAX_ITER iterations); the last is solved to the caller's tolerance
+def test_an_adaptive_ramp_gives_up_a_stalling_step_but_not_its_last(monkeypatch):
+    # the intermediate values of an adaptive continuation are given up when Newton stalls
+    # (STEP_STALL; the step is then halved); the last has the caller's iterations
+    from rotarykiln.kiln.inputs.boundary import Scales
     from rotarykiln.kiln.steady import continuation as cont
 
     seen = []
 
     def record(F, x, scale, **kw):
-        seen.append((F.keywords["scales"].reaction, kw["tol"], kw["max_iter"]))
+        seen.append((F.keywords["scales"].reaction, kw["tol"], kw.get("stall")))
         return x, cont.newton.NewtonReport(1, 0.0, (0.0,), 1)
 
     monkeypatch.setattr(cont.newton, "newton_banded", record)
@@ -283,13 +284,11 @@ def test_an_adaptive_ramp_solves_its_steps_loosely_and_its_end_to_the_tolerance(
         def evaluate(self, x, scales):
             return x
 
-    from rotarykiln.kiln.inputs.boundary import Scales
-
     stage = cont.ramp(lambda v: Scales(reaction=v), adaptive=True)
     stage(Residual(), np.zeros((3, 2)), 1.0, {"tol": 1e-11, "max_iter": 60})
     assert [s[0] for s in seen] == [0.25, 0.75, 1.0]
-    assert seen[:-1] == [(0.25, cont.STEP_TOL, cont.STEP_MAX_ITER), (0.75, 1e-6, 12)]
-    assert seen[-1] == (1.0, 1e-11, 60)
+    assert seen[:-1] == [(0.25, 1e-11, cont.STEP_STALL), (0.75, 1e-11, (8, 1e-2))]
+    assert seen[-1] == (1.0, 1e-11, None)
 
 
 def test_a_hot_feed_ramps_its_rate_temperature_from_below_its_own(monkeypatch):

@@ -39,17 +39,16 @@ __all__ = [
     "check_finite",
     "profile_fields",
     "FIXED_STEPS",
-    "STEP_TOL",
-    "STEP_MAX_ITER",
+    "STEP_STALL",
 ]
 
 #: Fixed continuation steps (radiation, heat release).
 FIXED_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
-#: An adaptive continuation's intermediate steps are only starts for the next: solved to this
-#: (scaled) tolerance, in at most this many Newton iterations (a step too long then fails
-#: fast; the cement kiln's rate-temperature ramp spent 60 iterations on each failure).
-STEP_TOL = 1e-6
-STEP_MAX_ITER = 12
+#: An adaptive continuation's intermediate steps are given up when after STEP_STALL[0] Newton
+#: iterations the residual is not below STEP_STALL[1] times where the step started: a step too
+#: long then fails fast and is halved (the cement kiln's rate-temperature ramp spent 60
+#: iterations on each such failure).
+STEP_STALL = (8, 1e-2)
 
 
 def initial_temperatures(z_nodes, t_feed, t_hot, wall, counter_current=True):
@@ -110,10 +109,10 @@ def ramp(
     values), or from 0 to 1 in adaptive steps (start 0.25, halved on failure down to 1/256,
     doubled on success up to 0.5) when ``adaptive``; ``max_failures`` failed steps end an
     adaptive stage with the last failure (a start on a coarse grid, where stalling at a fold
-    costs more than the fine grid's own continuation). An adaptive stage solves its
-    intermediate values (below 1) only as far as a start needs, to ``STEP_TOL`` in at most
-    ``STEP_MAX_ITER`` iterations (a step too long for Newton then fails in a few iterations
-    instead of 60, and is halved), and its last value to the caller's tolerance. Returns a
+    costs more than the fine grid's own continuation). An adaptive stage gives an
+    intermediate value (below 1) up when Newton stalls on it (``STEP_STALL``: a step too long
+    then fails in a few iterations instead of 60, and is halved); its last value has the
+    caller's iterations. Returns a
     callable ``stage(F, x, scale, kw) -> (x, iters)``.
     """
 
@@ -127,11 +126,7 @@ def ramp(
 
     def stepped(F, x, scale, kw):
         total, lam, step, failures = 0, 0.0, 0.25, 0
-        start_kw = dict(
-            kw,
-            tol=max(kw.get("tol", 0.0), STEP_TOL),
-            max_iter=min(kw.get("max_iter", STEP_MAX_ITER), STEP_MAX_ITER),
-        )
+        start_kw = dict(kw, stall=STEP_STALL)
         while lam < 1.0:
             trial = min(1.0, lam + step)
             log.info("continuation: parameter %.4g (step %.4g)", trial, step)

@@ -119,6 +119,7 @@ def newton_banded(
     where=None,
     step_floor=1.0,
     squared=None,
+    stall=None,
 ):
     """Solve ``F(x) = 0`` for ``x`` of shape ``(n, nv)``.
 
@@ -150,6 +151,10 @@ def newton_banded(
         by Newton in ``q`` (``q + 2 s ds``, the same linear solve), kept above
         ``SQUARED_FLOOR q``. For a residual linear in ``q`` whose root is near ``q = 0`` (a
         first-order reactant used up), Newton in ``s`` only halves ``s`` per iteration.
+    stall : (int, float), optional
+        ``(k, f)``: give up after ``k`` iterations if the residual is not below ``f`` times
+        where it started (a continuation step too long for Newton then costs ``k`` iterations,
+        not ``max_iter``; one that converges slowly still may).
 
     Returns
     -------
@@ -232,6 +237,9 @@ def newton_banded(
         x, R, norm = xt, Rt, nt_norm
         history.append(norm)
         log.info("  Newton iteration %d: residual %.3g (step %.3g)", it, norm, lam)
+        if stall is not None and it >= stall[0] and norm > tol and norm > stall[1] * history[0]:
+            log.info("Newton stalls: residual %.3g after %d iterations", norm, it)
+            break
     j, v = (
         np.unravel_index(int(np.argmax(np.abs(R))), R.shape) if np.all(np.isfinite(R)) else (0, 0)
     )

@@ -205,6 +205,8 @@ def finish_solution(
     fl["gas_velocity"] = gas.mass_flux / gas.density(fl["t_gas_mean"])  # m/s, cells
     for solid in {id(s): s for s in kiln.bed.solids.values()}.values():
         solid.check_range(tb_n)  # a library solid's c_p fit extrapolated: OutOfRangeWarning
+    if hasattr(res.wall, "check_service_limits"):  # a lining above its t_max: a warning
+        res.wall.check_service_limits(x[:, 2:i0], res.z)
     # global balances
     bal = {key: float(v) for key, v in global_balance(res, fl, prod, tb_n, tg_n, qb, qg).items()}
     e_in, e_out, loss = bal["energy_in"], bal["energy_out"], bal["shell_loss"]

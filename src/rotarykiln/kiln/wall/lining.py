@@ -17,10 +17,12 @@ temperatures it has and which balances close them. Per metre of kiln, with
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from rotarykiln.errors import OutOfRangeWarning
 from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
 from rotarykiln.materials.gas import GasPropertyTable, air_table
 from rotarykiln.materials.lining import Layer
@@ -195,6 +197,62 @@ class LinedWall:
             )
         rows.append(shell)
         return rows, q_loss
+
+    def check_service_limits(self, t_wall, z) -> bool:
+        """Warn (:class:`~rotarykiln.errors.OutOfRangeWarning`) for each lining layer whose hot
+        face is above its material's service limit ``t_max``, where the layer is present.
+
+        ``t_wall``: the wall temperatures (K, ``(n, n_temperatures)``); ``z``: the cells'
+        centres (m). The limit is also the top of the range of the material's k(T), so such a
+        lining conducts at an extrapolated conductivity. Returns True when a layer warned.
+
+        Examples
+        --------
+        >>> import warnings
+        >>> from rotarykiln.materials.lining import load_lining_material
+        >>> w = LinedWall((Layer(load_lining_material("fireclay_brick"), 0.1, ((0.0, 0.5),)),),
+        ...               np.array([[0.5, 0.5], [0.6, 0.6]]), 0.8, 300.0)
+        >>> with warnings.catch_warnings(record=True) as caught:
+        ...     warnings.simplefilter("always")
+        ...     w.check_service_limits(np.array([[1800.0, 400.0], [1750.0, 450.0]]),
+        ...                            np.array([0.25, 2.0]))  # absent at 0.25 m
+        True
+        >>> print(caught[0].message)
+        lining layer 1 (fireclay_brick): its hot face reaches 1750 K at z = 2 m, above the fireclay_brick t_max of 1700 K (its service limit, and the top of its k(T))
+
+        References
+        ----------
+        Service limits of the lining materials: materials/refractories.yaml (manufacturer-class
+        values) or the case's ``wall.lining[i].material.t_max``.
+        """
+        t = np.asarray(t_wall, dtype=float)
+        z = np.asarray(z, dtype=float)
+        warned = False
+        for i, layer in enumerate(self.layers):
+            limit = layer.material.t_max
+            hot = np.maximum(t[:, i], t[:, i + 1])
+            over = layer.present(z) & (hot > limit)
+            if not over.any():
+                continue
+            name = layer.material.name
+            zs = z[over]
+            where = f"{zs[0]:.3g} m" if zs.size == 1 else f"{zs[0]:.3g}-{zs[-1]:.3g} m"
+            source = f"{name} t_max"
+            warnings.warn(
+                OutOfRangeWarning(
+                    f"lining layer {i + 1} ({name}): its hot face reaches "
+                    f"{hot[over].max():.0f} K at z = {where}, above the {source} of "
+                    f"{limit:.0f} K (its service limit, and the top of its k(T))",
+                    quantity=f"lining layer {i + 1} hot face [K]",
+                    outside=(float(hot[over].min()), float(hot[over].max())),
+                    high=float(limit),
+                    source=source,
+                    mask=over,
+                ),
+                stacklevel=2,
+            )
+            warned = True
+        return warned
 
     def initial_guess(self, t_wall):
         """Wall temperatures (K, ``(n, n_temperatures)``) from an inner-wall guess (K)."""
