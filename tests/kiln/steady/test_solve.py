@@ -327,3 +327,41 @@ def test_the_cement_kiln_solves_with_ten_percent_more_fuel_or_fuel_and_feed(over
     assert abs(sol.energy_closure) < 1e-6
     assert max(sol.element_closure.values()) < 1e-8
     assert sol.bed_flows["CaCO3"][-1] < 1e-6 * kiln.feed.flows["CaCO3"]
+
+
+def test_a_fine_grid_that_fails_from_its_coarse_start_is_retried_stepping_every_root_squared(
+    monkeypatch,
+):
+    # the limestone kiln's CaCO3 (order 1/2) is solved for as sqrt(Q) and stepped in it; when
+    # the fine grid's Newton fails from the coarse start, the retry steps it in Q
+    from rotarykiln.kiln.steady import continuation as cont
+
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("limestone_calcination")))
+    real = cont.newton.newton_banded
+    fine = []
+
+    def first_fine_fails(F, x0, scale, **kw):
+        if np.shape(x0)[0] == cells and not hasattr(F, "keywords"):
+            fine.append(kw.get("squared").copy())
+            if len(fine) == 1:
+                raise ConvergenceError("the first fine Newton, failed by the test")
+        return real(F, x0, scale, **kw)
+
+    monkeypatch.setattr(cont.newton, "newton_banded", first_fine_fails)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sol = solve_kiln(kiln, cells)
+    from rotarykiln.kiln.residual import KilnResidual
+
+    res = KilnResidual(kiln, cells)
+    i0 = res.i_species
+    roots = np.zeros(res.nv, dtype=bool)
+    roots[i0 : i0 + res.nb] = res.sqrt_mask
+    assert len(fine) == 2 and roots.any()
+    assert not fine[0][roots].all()  # CaCO3 stepped in its root first ...
+    assert fine[1][roots].all()  # ... then in its square: the retry converged
+    monkeypatch.undo()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ref = solve_kiln(kiln, cells)
+    np.testing.assert_allclose(sol.t_bed_nodes, ref.t_bed_nodes, rtol=0, atol=1e-6)

@@ -208,6 +208,7 @@ def newton_sequenced(
     min_cells: int = SEQUENCE_MIN,
     ratio: int = SEQUENCE_RATIO,
     coarse_tol: float = SEQUENCE_TOL,
+    retry_options: dict | None = None,
     **kw,
 ):
     """:func:`newton_with_continuation` on the kiln residual ``F`` from a grid-sequenced start.
@@ -218,9 +219,11 @@ def newton_sequenced(
     start) and interpolated back (:func:`interpolate_unknowns`); Newton on ``F`` then starts
     there and converges to ``kw["tol"]`` as usual. The coarsest grid, where Newton from the
     guess fails, is solved with the continuation ``continuation_of(R)`` of its own residual
-    (when given: cheap there, and the finer grids then start from its solution). If the
-    coarse or the fine Newton fails, the solve falls back to :func:`newton_with_continuation`
-    from ``x0`` (the path without sequencing), so only the time changes.
+    (when given: cheap there, and the finer grids then start from its solution). If the fine
+    Newton fails from the coarse start, it is tried once more with ``retry_options`` (other
+    keyword options of the Newton solver) when given. If the coarse or the fine Newton fails,
+    the solve falls back to :func:`newton_with_continuation` from ``x0`` (the path without
+    sequencing), so only the time changes.
 
     Returns ``(x, Newton iterations on the grid of F)``.
     """
@@ -248,11 +251,13 @@ def newton_sequenced(
         log.info("grid sequencing: a start from %d cells for %d", C.n, F.n)
         xc = solved(C, interpolate_unknowns(F, np.asarray(x0, dtype=float), C))
         if xc is not None:
-            try:
-                x, rep = newton.newton_banded(F, interpolate_unknowns(C, xc, F), scale, **kw)
-                return x, rep.iterations
-            except ConvergenceError:
-                pass
+            start = interpolate_unknowns(C, xc, F)
+            for options in ({}, retry_options) if retry_options else ({},):
+                try:
+                    x, rep = newton.newton_banded(F, start, scale, **dict(kw, **options))
+                    return x, rep.iterations
+                except ConvergenceError:
+                    pass
     return newton_with_continuation(F, x0, scale, continuation, **kw)
 
 

@@ -140,12 +140,24 @@ def solve_kiln(
             _continuation(res),
             make_residual=make_residual,
             continuation_of=functools.partial(_continuation, max_failures=COARSE_FAILURES),
+            retry_options=_every_root_squared(res, kw["squared"]),
             **kw,
         )
     else:
         x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
         x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
     return finish_solution(res, x, total, check_balances=check_balances)
+
+
+def _every_root_squared(res: KilnResidual, squared: np.ndarray) -> dict | None:
+    """Newton options stepping every square-root unknown in its square (None if they all do
+    already): the retry of a fine grid whose Newton failed from its coarse start. A reactant of
+    order 1/2 used up within a cell or two (the cement kiln's remaining CaCO3 in its hot meal)
+    has, below the rate floor, a rate first order in its flow: Newton in the square root only
+    halves it per iteration there (:func:`_consumed_at_first_order`)."""
+    every = squared.copy()
+    every[res.i_species : res.i_species + res.nb] |= res.sqrt_mask
+    return {"squared": every} if (every != squared).any() else None
 
 
 def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
