@@ -127,25 +127,37 @@ def solve_kiln(
     res = KilnResidual(kiln, int(n_cells))
     q_ref = res.q_ref
     kw = newton_options(res, tol=tol, max_iter=max_iter)
-    if initial is None and (kiln.chemistry.mechanism.reactions or res.n > SEQUENCE_INERT_MIN):
+    every = _every_root_squared(res, kw["squared"])
+    sequenced = initial is None and (
+        kiln.chemistry.mechanism.reactions or res.n > SEQUENCE_INERT_MIN
+    )
+    x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
+    try:
+        if sequenced:
 
-        def make_residual(n):
-            return KilnResidual(kiln, n, q_ref=q_ref)
+            def make_residual(n):
+                return KilnResidual(kiln, n, q_ref=q_ref)
 
-        x0 = _initial_guess(res)
-        x, total = steady.newton_sequenced(
-            res,
-            x0,
-            q_ref,
-            _continuation(res),
-            make_residual=make_residual,
-            continuation_of=functools.partial(_continuation, max_failures=COARSE_FAILURES),
-            retry_options=_every_root_squared(res, kw["squared"]),
-            **kw,
+            x, total = steady.newton_sequenced(
+                res,
+                x0,
+                q_ref,
+                _continuation(res),
+                make_residual=make_residual,
+                continuation_of=functools.partial(_continuation, max_failures=COARSE_FAILURES),
+                retry_options=every,
+                **kw,
+            )
+        else:
+            x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
+    except ConvergenceError:
+        if every is None:
+            raise
+        # the last resort: the continuation again, every root unknown stepped in its square
+        # (the lime kiln 5 % off its feed or coal: the front where its CaCO3 runs out)
+        x, total = steady.newton_with_continuation(
+            res, x0, q_ref, _continuation(res), **dict(kw, **every)
         )
-    else:
-        x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
-        x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
     return finish_solution(res, x, total, check_balances=check_balances)
 
 
