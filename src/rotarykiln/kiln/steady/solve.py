@@ -101,8 +101,9 @@ def solve_kiln(
     Raises
     ------
     ConvergenceError
-        Newton fails after continuation in the reaction rates (and radiation); the message
-        names the cell (z) and equation with the largest residual. Also when a balance does
+        Newton fails after continuation in the reaction rates (and radiation), and again with
+        every square-root unknown stepped in its square; the message names the cell (z) and
+        equation with the largest residual of the last attempt. Also when a balance does
         not close or a result is not finite.
 
     Examples
