@@ -112,8 +112,7 @@ def ramp(
     costs more than the fine grid's own continuation). An adaptive stage gives an
     intermediate value (below 1) up when Newton stalls on it (``STEP_STALL``: a step too long
     then fails in a few iterations instead of 60, and is halved); its last value has the
-    caller's iterations. Returns a
-    callable ``stage(F, x, scale, kw) -> (x, iters)``.
+    caller's iterations. Returns a callable ``stage(F, x, scale, kw) -> (x, iters)``.
     """
 
     def fixed(F, x, scale, kw):
