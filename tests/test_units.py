@@ -1,6 +1,7 @@
 import math
 import re
 
+import numpy as np
 import pytest
 
 from rotarykiln.errors import InputError
@@ -104,3 +105,30 @@ def test_bare_numbers_refused_where_the_habitual_unit_is_not_si(value, kind):
         to_si("x", value, kind)
     assert to_si("x", 0, kind) == 0.0
     assert to_si("x", 0.3, "length") == 0.3  # other kinds: a bare number is SI
+
+
+@pytest.mark.parametrize(
+    ("unit", "kind"),
+    [
+        ("kg/h", "mass flow"),
+        ("t/h", "mass flow"),
+        ("rpm", "rotation rate"),
+        ("degC", "temperature"),
+        ("degF", "temperature"),
+        ("L/s", "volumetric flow"),
+        ("kW", "power"),
+        ("%", "fraction"),
+        ("W/m2K", "heat transfer coefficient"),
+    ],
+)
+def test_a_unit_read_once_converts_its_next_texts_as_pint_does(unit, kind):
+    """A study's sampled values are new texts with a known unit: converted by that unit's
+    factor or offset, to the same float as pint's conversion of the whole text."""
+    from rotarykiln.units import _convert_text
+
+    rng = np.random.default_rng(0)
+    for v in rng.uniform(0.0, 3000.0, 300):
+        text = f"{v:.9g} {unit}"
+        assert to_si("x", text, kind) == _convert_text("x", text, kind), text
+    with pytest.raises(InputError, match="not a finite number"):
+        to_si("x", f"1e400 {unit}", kind)

@@ -387,8 +387,41 @@ TEXT_CACHE_SIZE = 8192
 def _text_to_si(text: str, kind: str) -> float:
     """The SI value of a quantity ``text`` of ``kind`` (:func:`to_si`'s conversion of a text,
     cached per distinct text: the same float as converting it afresh; refusals are not cached,
-    and are raised again, naming the field, by the caller)."""
+    and are raised again, naming the field, by the caller).
+
+    A number followed by a unit already read once for ``kind`` is converted by that unit's
+    factor (or kelvin offset) without pint (:func:`_unit_conversion`): a study's sampled
+    values are each a new text with one of a few units."""
+    m = _NUMBER.match(text)
+    if m and m.group(2) and kind != "angle":
+        conversion = _unit_conversion(m.group(2), kind)
+        if conversion is not None:
+            factor, offset = conversion
+            value = float(m.group(1))
+            si = value * factor if offset == 0.0 else value + offset
+            if math.isfinite(si):
+                return si
     return _convert_text("", text, kind)
+
+
+@lru_cache(maxsize=256)
+def _unit_conversion(unit: str, kind: str) -> tuple[float, float] | None:
+    """``(factor, offset)`` such that ``number unit`` is ``number * factor`` (offset 0) or
+    ``number + offset`` (factor 1: degC to K) in the SI unit of ``kind``: the same floats as
+    pint's conversion of the whole text (pint multiplies the magnitude by the same factor, or
+    adds the same offset). None for a unit that is neither (degF, angles: their texts go
+    through pint each time) or that ``kind`` refuses (the text is then refused by pint, with
+    its message)."""
+    try:
+        zero = _convert_text("", f"0 {unit}", kind)
+        one = _convert_text("", f"1 {unit}", kind)
+    except InputError:
+        return None
+    if zero == 0.0 and math.isfinite(one):
+        return one, 0.0
+    if one - zero == 1.0:
+        return 1.0, zero
+    return None
 
 
 @lru_cache(maxsize=256)

@@ -111,11 +111,12 @@ def element_flows(
     """
     sp = species or default_species()
     W = sp.element_mass_fractions()
-    out = dict.fromkeys(sp.elements, 0.0)
+    elements = sp.elements
+    out = dict.fromkeys(elements, 0.0)
     for name, q in mass_flows.items():
-        i = sp.index(name, "mass_flows")
-        for k, e in enumerate(sp.elements):
-            out[e] += float(W[k, i] * q)
+        column = W[:, sp.index(name, "mass_flows")] * q
+        for k, e in enumerate(elements):
+            out[e] += float(column[k])
     return out
 
 

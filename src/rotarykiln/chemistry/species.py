@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -106,7 +106,7 @@ class SpeciesTable:
     def gas_names(self) -> tuple[str, ...]:
         return tuple(s.name for s in self.species if s.phase == "gas")
 
-    @property
+    @cached_property
     def elements(self) -> tuple[str, ...]:
         """Elements present in at least one species, in a stable order."""
         seen: list[str] = []
@@ -149,13 +149,20 @@ class SpeciesTable:
         return a
 
     def element_mass_fractions(self) -> np.ndarray:
-        """Mass of element e per kg of species i, shape (n_elements, n_species).
+        """Mass of element e per kg of species i, shape (n_elements, n_species), read-only
+        (computed once per table).
 
         Multiplying species mass rates (kg/s/m) by this matrix gives element mass rates.
         """
+        return self._element_mass_fractions
+
+    @cached_property
+    def _element_mass_fractions(self) -> np.ndarray:
         a = self.element_matrix()
         m_el = np.array([self.element_masses[e] for e in self.elements])
-        return a * m_el[:, None] / self.molar_masses[None, :]
+        w = a * m_el[:, None] / self.molar_masses[None, :]
+        w.setflags(write=False)
+        return w
 
 
 def _molar_mass(name: str, elements: Mapping[str, float], masses: Mapping[str, float]) -> float:

@@ -26,7 +26,7 @@ import numpy as np
 from rotarykiln.geometry import CrossSection
 from rotarykiln.heat.gas_radiation import gorog_mean_beam_length
 
-__all__ = ["Grid", "cell_grid", "section_fields"]
+__all__ = ["Grid", "cell_grid", "release_per_cell", "section_fields"]
 
 ABSENT_LAYER_THICKNESS = 1.0e-6  # m: a layer absent on a stretch is given this thickness
 
@@ -165,18 +165,7 @@ def cell_grid(
         ]
     ).reshape(len(layers), n)
     radii = R + np.vstack([np.zeros((1, n)), np.cumsum(thick, axis=0)])
-    if heat_release > 0:
-        if heat_release_profile is None:
-            w = np.ones(n)
-        else:
-            w = np.asarray(heat_release_profile(z), dtype=float) * np.ones(n)
-            if np.any(~np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0:
-                raise InputError(
-                    "burner (heat release profile)", "profile", "finite, >= 0 and not all zero"
-                )
-        q_rel = heat_release * w / (w.sum() * dz)
-    else:
-        q_rel = np.zeros(n)
+    q_rel = release_per_cell(heat_release, heat_release_profile, z, dz)
     return Grid(
         n=n,
         z_nodes=zn,
@@ -188,3 +177,49 @@ def cell_grid(
         present=present,
         heat_release=q_rel,
     )
+
+
+def release_per_cell(heat_release: float, profile, z: np.ndarray, dz: float) -> np.ndarray:
+    r"""Heat released in the gas per metre of each cell, normalised over the cells.
+
+    .. math:: q_j = \frac{Q\,w(z_j)}{\Delta z \sum_k w(z_k)}
+
+    Parameters
+    ----------
+    heat_release : float, W
+        Heat released over the kiln, Q.
+    profile : callable or None
+        Weights w (-) of the release at the cell centres (None: uniform).
+    z : array, m
+        Cell centres.
+    dz : float, m
+        Cell length.
+
+    Returns
+    -------
+    array, W/m
+        Per cell; the cells times ``dz`` sum to ``heat_release`` (zeros when it is 0).
+
+    Examples
+    --------
+    >>> release_per_cell(1000.0, lambda z: z, np.array([0.5, 1.5]), 1.0).tolist()
+    [250.0, 750.0]
+
+    References
+    ----------
+    The finite-volume cells of this module (:func:`cell_grid`).
+    """
+    from rotarykiln.errors import InputError
+
+    n = len(z)
+    if not heat_release > 0:
+        return np.zeros(n)
+    if profile is None:
+        w = np.ones(n)
+    else:
+        w = np.asarray(profile(z), dtype=float) * np.ones(n)
+        if np.any(~np.isfinite(w)) or np.any(w < 0) or w.sum() <= 0:
+            raise InputError(
+                "burner (heat release profile)", "profile", "finite, >= 0 and not all zero"
+            )
+    return heat_release * w / (w.sum() * dz)

@@ -40,6 +40,7 @@ species (and so elements) and energy telescope to the global balances.
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 
 import numpy as np
@@ -55,7 +56,7 @@ from rotarykiln.kiln.exchange import (
     upwind_weight,
 )
 from rotarykiln.kiln.gas_mixture import MixtureGas, mixture_of, temperature_of_enthalpy
-from rotarykiln.kiln.grid import cell_grid
+from rotarykiln.kiln.grid import cell_grid, release_per_cell
 from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import FULL, BoundaryInputs, Scales
 from rotarykiln.kiln.wall.lining import ConstantUWall, LinedWall
@@ -215,9 +216,34 @@ class KilnResidual:
             if self.depth is not None:
                 self.i_depth = self.nv
                 self.nv += 1
+        #: whether the kiln has reactions (without, the residual has no sources to evaluate)
+        self.reacting = bool(mech.reactions)
         #: the inputs at the ends of the kiln's own inputs (the steady solve's)
         self.inputs = BoundaryInputs.of(k, self.bed_names, self.gas_names)
         self.q_ref = float(self.reference_heat() if q_ref is None else q_ref)
+
+    def with_kiln(self, kiln: Kiln) -> KilnResidual:
+        """The residual of ``kiln`` on this residual's cells, for a kiln that differs from this
+        one's only in its boundary inputs (the fields a batch may vary:
+        :data:`~rotarykiln.kiln.steady.batch.BOUNDARY_FIELDS`; the caller checks that, as
+        :func:`~rotarykiln.kiln.steady.batch.same_structure` does): this residual's species,
+        wall and closures with the kiln's inlet flows, release profile, rotation, inputs and
+        reference heat, as ``KilnResidual(kiln, n)`` sets them, at a fraction of the cost (a
+        study's thousand operating points of one kiln)."""
+        new = copy.copy(self)
+        new.kiln = k = kiln
+        new.bed_in = np.array([k.feed.flows.get(s, 0.0) for s in self.bed_names])
+        new.gas_inlet = np.array([k.gas.flows.get(s, 0.0) for s in self.gas_names])
+        new.bed_scale = float(new.bed_in.sum())
+        new.gas_scale = float(new.gas_inlet.sum())
+        new.flow_in = {s: float(k.feed.flows.get(s, 0.0)) for s in self.species.bed_names}
+        release = release_per_cell(k.firing.heat_release, k.firing.profile, self.z, self.dz)
+        new.grid = dataclasses.replace(self.grid, heat_release=release)
+        new.bed_source, new.bed_source_faces = new._bed_sources()
+        new.exchange = dataclasses.replace(self.exchange, geometry=new.grid, omega=k.drum.omega)
+        new.inputs = BoundaryInputs.of(k, self.bed_names, self.gas_names)
+        new.q_ref = float(new.reference_heat())
+        return new
 
     def hottest_source(self) -> float:
         """The hottest heat source, K: the inlet gas with all the heat released in it, a
@@ -483,31 +509,41 @@ class KilnResidual:
         q_gw, q_gb, q_cw, q_rw, q_rb = (fl[key] for key in FLOW_KEYS)
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
-        prod, heat, rate, heat_gas, prod_gp = self.rates(
-            tb,
-            tg,
-            qb[..., 1:, :],
-            qg[..., self.gas_out, :],
-            q_bed_in,
-            co["h_gb"],
-            geo,
-            tbn[..., 1:],
-            scales=scales,
-            inputs=u,
-        )
-        w_bed = prod[..., self.bed_idx]
-        w_gas = prod[..., self.gas_idx]
-        # what the bed releases (bed reactions) enters the gas at the bed temperature; a
-        # freeboard reaction releases -dH_298 r into the gas, whose sensible tables do the rest
-        w_released = w_gas - prod_gp[..., self.gas_idx]
-        # the enthalpies at the faces and at the cells' bed temperature, each in one call
         m = tbn.shape[-1]
-        hb_both = self.bed_enthalpy(np.concatenate([tbn, tb], -1))
-        hb_nodes, hb_cell = hb_both[..., :m, :], hb_both[..., m:, :]
-        hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, tb], -1))
-        hg_nodes, hg_at_bed = hg_both[..., :m, :], hg_both[..., m:, :]
-        s_bed = -heat + (w_bed * hb_cell).sum(-1)
-        s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
+        if self.reacting:
+            prod, heat, rate, heat_gas, prod_gp = self.rates(
+                tb,
+                tg,
+                qb[..., 1:, :],
+                qg[..., self.gas_out, :],
+                q_bed_in,
+                co["h_gb"],
+                geo,
+                tbn[..., 1:],
+                scales=scales,
+                inputs=u,
+            )
+            w_bed = prod[..., self.bed_idx][..., self.bed_pos]
+            w_gas = prod[..., self.gas_idx]
+            # what the bed releases (bed reactions) enters the gas at the bed temperature; a
+            # freeboard reaction releases -dH_298 r into the gas, whose sensible tables do the
+            # rest
+            w_released = w_gas - prod_gp[..., self.gas_idx]
+            w_gas = w_gas[..., self.gas_pos]
+            # the enthalpies at the faces and at the cells' bed temperature, each in one call
+            hb_both = self.bed_enthalpy(np.concatenate([tbn, tb], -1))
+            hb_nodes, hb_cell = hb_both[..., :m, :], hb_both[..., m:, :]
+            hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, tb], -1))
+            hg_nodes, hg_at_bed = hg_both[..., :m, :], hg_both[..., m:, :]
+            s_bed = -heat + (prod[..., self.bed_idx] * hb_cell).sum(-1)
+            s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
+        else:
+            # no reactions: no sources, and no enthalpies at the cells' bed temperature (the
+            # same rows as with every rate zero, for a fraction of the work)
+            w_bed = w_gas = 0.0
+            hb_nodes = self.bed_enthalpy(tbn)
+            hg_nodes = self.mixture.species_enthalpy(tgn)
+            s_bed = s_gas = 0.0
         release = self.release(scales, u)
         if self.kiln.firing.heat_release > 0:
             s_gas = s_gas + release
@@ -531,7 +567,7 @@ class KilnResidual:
         q_ref = self.q_ref
         if self.nb:
             qv = qb[..., self.bed_pos]
-            net = qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed[..., self.bed_pos]
+            net = qv[..., 1:, :] - qv[..., :-1, :] - dz * w_bed
             if self.bed_sources:
                 net = net - dz * self.bed_source[:, self.bed_pos]
             if disp_species is not None:
@@ -541,7 +577,7 @@ class KilnResidual:
         if self.ng:
             gv = qg[..., self.gas_pos]
             dg = sign * (gv[..., :-1, :] - gv[..., 1:, :])
-            rg = (dg - dz * w_gas[..., self.gas_pos]) / self.gas_scale
+            rg = (dg - dz * w_gas) / self.gas_scale
             parts.append(rg * q_ref)
         if self.depth is not None:
             q_vol = self.volume_flow(qb)
@@ -550,11 +586,16 @@ class KilnResidual:
         R = np.concatenate(parts, axis=-1)
         if not full:
             return R
+        if not self.reacting:
+            n_species, n_reactions = len(self.species.names), 0
+            prod = prod_gp = np.zeros(tb.shape + (n_species,))
+            rate = np.zeros(tb.shape + (n_reactions,))
+            heat = heat_gas = np.zeros(tb.shape)
         chemistry = {
             "q_source_gas": np.broadcast_to(release, tg.shape) * 1.0,
             "q_reaction_absorbed": heat + heat_gas,
-            "q_bed_chemistry": s_bed,
-            "q_gas_chemistry": s_gas,
+            "q_bed_chemistry": s_bed + np.zeros(tb.shape),
+            "q_gas_chemistry": s_gas + np.zeros(tb.shape),
         }
         if self.kiln.wall.heaters or self.kiln.wall.jacket is not None:
             chemistry["q_electric_heating"] = self.wall.heating(tl)

@@ -161,16 +161,42 @@ def si_value(value: Any) -> float:
 def _si_text(value: str) -> float:
     """:func:`si_value` of a text, kept per distinct text (pint reads one in ~0.3 ms; a
     study's table asks for each of its values more than once)."""
+    m = _NUMBER.match(value)
+    if m and m.group(2):
+        conversion = _base_conversion(m.group(2))
+        if conversion is not None:
+            factor, offset = conversion
+            number = float(m.group(1))
+            return number * factor if offset == 0.0 else number + offset
+    return _pint_si(value)
+
+
+def _pint_si(text: str) -> float:
     from rotarykiln.units import ureg
 
     try:
-        q = ureg.Quantity(value.strip())
+        q = ureg.Quantity(text.strip())
     except Exception:  # not a quantity: a label
         return math.nan
     try:
         return float(q.to_base_units().magnitude)
     except Exception:
         return math.nan
+
+
+@functools.lru_cache(maxsize=256)
+def _base_conversion(unit: str) -> tuple[float, float] | None:
+    """``(factor, offset)`` of a unit to pint's base units, as
+    :func:`rotarykiln.units._unit_conversion` (the same floats as pint's conversion of a
+    whole text); None for a unit that is neither a factor nor a kelvin offset, or a label."""
+    zero, one = _pint_si(f"0 {unit}"), _pint_si(f"1 {unit}")
+    if not (math.isfinite(zero) and math.isfinite(one)):
+        return None
+    if zero == 0.0:
+        return one, 0.0
+    if one - zero == 1.0:
+        return 1.0, zero
+    return None
 
 
 # ---------------------------------------------------------------------------------------------

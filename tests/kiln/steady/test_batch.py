@@ -12,6 +12,7 @@ from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.steady.batch import (
+    batch_residuals,
     batch_size_for,
     same_structure,
     solve_batch,
@@ -86,6 +87,54 @@ def test_batched_and_single_solves_agree_on_every_builtin_kiln(name):
             _same_solution(sol, single)
             assert abs(sol.energy_closure) <= 1e-6
             assert max(sol.element_closure.values()) <= 1e-8
+
+
+def _same_attribute(a, b) -> bool:
+    """Deep equality of residual attributes (arrays bit for bit, dataclasses field by field)."""
+    import dataclasses
+
+    if a is b:
+        return True
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.shape(a) == np.shape(b) and bool(np.array_equal(a, b, equal_nan=True))
+    if dataclasses.is_dataclass(a) and not isinstance(a, type):
+        return type(a) is type(b) and all(
+            _same_attribute(getattr(a, f.name), getattr(b, f.name)) for f in dataclasses.fields(a)
+        )
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(_same_attribute(a[k], b[k]) for k in a)
+    if isinstance(a, tuple | list):
+        return len(a) == len(b) and all(_same_attribute(u, v) for u, v in zip(a, b, strict=True))
+    return bool(a == b)
+
+
+@pytest.mark.parametrize("name", KILN_CASES + ["cement_kiln", "lime_kiln"])
+def test_a_residual_of_another_operating_point_is_the_residual_built_for_it(name):
+    """``KilnResidual.with_kiln`` (a batch's cases after the first) sets every attribute as
+    building the residual of that kiln does: inlet flows, scales, release profile, rotation,
+    inputs, reference heat."""
+    kiln, cells = kiln_from_case(load_case(builtin_case_path(name)))
+    other = operating_points(kiln, 1, seed=7)[0]
+    built, variant = KilnResidual(other, cells), KilnResidual(kiln, cells).with_kiln(other)
+    assert built.__dict__.keys() == variant.__dict__.keys()
+    differ = [
+        k for k in built.__dict__ if not _same_attribute(built.__dict__[k], variant.__dict__[k])
+    ]
+    assert differ == []
+    assert variant.q_ref != KilnResidual(kiln, cells).q_ref  # it did change with the inputs
+
+
+def test_batch_residuals_build_one_residual_per_structure():
+    tscheng, _ = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    longer = tscheng.replace(drum__length=3.0)
+    cold = tscheng.replace(gas__temperature=400.0)
+    no_argon = tscheng.replace(gas__flows={s: v for s, v in tscheng.gas.flows.items() if s != "AR"})
+    residuals, groups = batch_residuals([tscheng, longer, cold, no_argon, cold], 20)
+    assert groups == [[0, 2, 4], [1], [3]]
+    assert groups == structure_groups(
+        [KilnResidual(k, 20) for k in (tscheng, longer, cold, no_argon, cold)]
+    )
+    assert residuals[2].kiln is cold and residuals[2].inputs.gas_temperature == 400.0
 
 
 def test_a_batch_with_an_impossible_case_returns_every_other_case():

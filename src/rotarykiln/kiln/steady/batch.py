@@ -45,7 +45,14 @@ from rotarykiln.kiln.steady.solve import finish_solution, newton_options, solve_
 
 log = logging.getLogger(__name__)
 
-__all__ = ["solve_batch", "same_structure", "structure_groups", "batch_size_for", "BatchResidual"]
+__all__ = [
+    "solve_batch",
+    "same_structure",
+    "structure_groups",
+    "batch_residuals",
+    "batch_size_for",
+    "BatchResidual",
+]
 
 #: Memory the batched Jacobian may take, bytes (the batch size is reduced to fit it).
 BATCH_MEMORY = 256 * 2**20
@@ -166,6 +173,50 @@ def structure_groups(residuals: Sequence[KilnResidual]) -> list[list[int]]:
         else:
             groups.append([i])
     return groups
+
+
+def _positive(flows) -> frozenset:
+    return frozenset(s for s, v in flows.items() if v > 0)
+
+
+def _fits(base: KilnResidual, kiln: Kiln) -> bool:
+    """Does ``kiln`` share the model structure of the residual ``base``
+    (:func:`same_structure` of ``base`` and ``KilnResidual(kiln, base.n)``), judged on the
+    kiln's inputs: the same species fed and flowing in, the same fields but the boundary ones,
+    a burner's ash and dissociation the same."""
+    kb = base.kiln
+    if _positive(kb.feed.flows) != _positive(kiln.feed.flows):
+        return False
+    if _positive(kb.gas.flows) != _positive(kiln.gas.flows):
+        return False
+    if (kb.firing.heat_release > 0) != (kiln.firing.heat_release > 0):
+        return False
+    if (kb.bed.dispersion > 0) != (kiln.bed.dispersion > 0):
+        return False
+    ash = float(getattr(kiln.firing.flame, "ash_flow", 0.0) or 0.0)
+    if base.bed_sources != ({"ash": ash} if ash > 0 else {}):
+        return False
+    return _dissociation(kb) == _dissociation(kiln) and _equal(kb, kiln)
+
+
+def batch_residuals(kilns: Sequence[Kiln], n_cells: int):
+    """The residuals of ``kilns`` on ``n_cells`` cells and their structure groups (indices
+    into ``kilns``, as :func:`structure_groups` gives): the first kiln of each structure
+    built, the others its :meth:`~rotarykiln.kiln.residual.KilnResidual.with_kiln` (the same
+    residual as building theirs, at a fraction of the cost)."""
+    residuals: list[KilnResidual] = []
+    groups: list[list[int]] = []
+    for i, kiln in enumerate(kilns):
+        for g in groups:
+            base = residuals[g[0]]
+            if _fits(base, kiln):
+                residuals.append(base.with_kiln(kiln))
+                g.append(i)
+                break
+        else:
+            residuals.append(KilnResidual(kiln, n_cells))
+            groups.append([i])
+    return residuals, groups
 
 
 def batch_size_for(res: KilnResidual, requested: int | None = None, memory=BATCH_MEMORY) -> int:
@@ -591,13 +642,13 @@ def solve_batch(
     if int(n_cells) != n_cells or n_cells < 4:
         raise InputError("solver.cells", n_cells, "an integer >= 4")
     n_cells = int(n_cells)
-    residuals = [KilnResidual(k, n_cells) for k in kilns]
+    residuals, groups = batch_residuals(kilns, n_cells)
     out: list = [None] * len(residuals)
     caught: list[list] = [[] for _ in residuals]
     opts = dict(tol=tol, max_iter=max_iter, check_balances=check_balances)
     solved: list[int] = []
     opts["local"] = {}  # the local unknowns of each layout, found once
-    for group in structure_groups(residuals):
+    for group in groups:
         size = batch_size_for(residuals[group[0]], batch)
         _solve_group(residuals, group, size, out, caught, opts, solved)
     if warnings_out is not None:
@@ -712,8 +763,11 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     for first_case in range(0, len(rest), size):
         chunk = rest[first_case : first_case + size]
         starts = []
-        for i in chunk:
-            near = min(solved, key=lambda j, i=i: float(np.sum((key[j] - key[i]) ** 2)))
+        known = np.array([key[j] for j in solved])
+        wanted = np.array([key[i] for i in chunk])
+        nearest = ((known[None, :, :] - wanted[:, None, :]) ** 2).sum(-1).argmin(1)
+        for i, m in zip(chunk, nearest, strict=True):
+            near = solved[m]
             p = _physical(residuals[near], out[near].fluxes["x"])
             starts.append(_unknowns(residuals[i], p))
         rs = [residuals[i] for i in chunk]
