@@ -112,7 +112,9 @@ def global_balance(
     def total(key):
         return np.broadcast_to(fluxes.get(key, 0.0), batch + (n,)).sum(-1) * dz
 
-    if reaction_from_sources:
+    if not res.reacting:
+        reaction = np.zeros(batch)
+    elif reaction_from_sources:
         chemistry = fluxes["q_bed_chemistry"] + fluxes["q_gas_chemistry"]
         if res.kiln.firing.heat_release > 0:  # the release is part of the gas's source
             chemistry = chemistry - fluxes["q_source_gas"]

@@ -61,6 +61,7 @@ from rotarykiln.materials.gas import (
 )
 
 __all__ = [
+    "CaseMixtures",
     "GasMixture",
     "ThermoGasMixture",
     "MixtureGas",
@@ -335,6 +336,92 @@ def mixture_of(names, species: SpeciesTable | None = None, dissociation=None) ->
     )
     mm = np.array([sp[n].molar_mass for n in names])
     return ThermoGasMixture(tuple(names), mm, tables, dissociation, thermos, sp)
+
+
+class CaseMixtures:
+    """The gas mixtures of a batch of kilns whose gases differ only in the dissociation heat
+    their CO2 and H2O carry (a burner at other fuel or air flows: other products), for a
+    residual with a leading case axis.
+
+    ``mixtures``: one :class:`GasMixture` per case, of the same species and tables. Their
+    stacked enthalpy and c_p pieces (those of each case's own mixture, dissociation included)
+    are kept side by side, case after case, so that one gather evaluates every case at its
+    own; :meth:`take` gives the mixture of the cases a residual call evaluates (its leading
+    axis), which evaluates ``h`` and ``c_p`` as each case's own mixture does, to the last bit,
+    and everything else (transport, molar masses) as the first.
+
+    Examples
+    --------
+    >>> from rotarykiln.materials.dissociation import dissociation_heat
+    >>> mixes = [GasMixture.of(("N2", "CO2", "H2O"), dissociation=dissociation_heat(x))
+    ...          for x in ("CO2:1, H2O:2, N2:7.52", "CO2:1, H2O:2, O2:2, N2:15")]
+    >>> T = np.array([[2000.0, 2200.0], [2000.0, 2200.0]])   # case 0, case 1
+    >>> h = CaseMixtures(mixes).take(np.array([0, 1])).species_enthalpy(T)
+    >>> bool((h[0] == mixes[0].species_enthalpy(T[0])).all()), bool(
+    ...     (h[1] == mixes[1].species_enthalpy(T[1])).all())
+    (True, True)
+    """
+
+    def __init__(self, mixtures):
+        self.mixtures = list(mixtures)
+        first = self.mixtures[0]
+        m = len(T_GRID) - 1
+        self.pieces = m
+        fits = [mix._fits for mix in self.mixtures]
+        # per power, the pieces of every case one after the other: (cases x pieces, species)
+        self._cp = [np.concatenate([f[0]._coef[p] for f in fits]) for p in range(4)]
+        self._h = [np.concatenate([f[1]._coef[p] for f in fits]) for p in range(5)]
+        self._cp_lo = np.stack([f[3] for f in fits])
+        self._cp_hi = np.stack([f[4] for f in fits])
+        self.base = first
+
+    def take(self, cases) -> _CasesMixture:
+        """The mixture of the cases ``cases`` (index array into :attr:`mixtures`): the
+        leading axis of the temperatures it is given runs over them."""
+        return _CasesMixture(self, np.asarray(cases, dtype=np.intp))
+
+
+class _CasesMixture:
+    """:meth:`CaseMixtures.take`: a :class:`GasMixture` of several cases (leading axis)."""
+
+    def __init__(self, stack: CaseMixtures, cases: np.ndarray):
+        self._stack = stack
+        self._cases = cases
+        self._base = stack.base
+
+    def __getattr__(self, name):  # transport, molar masses, names: the same for every case
+        return getattr(self._base, name)
+
+    def _located(self, T):
+        T = np.asarray(T, dtype=float)
+        i, s = self._base._interval(T)
+        lead = self._cases.reshape((-1,) + (1,) * (T.ndim - 1))
+        return T, i + lead * self._stack.pieces, s, lead
+
+    @staticmethod
+    def _horner(coef, i, s):
+        s = s[..., None]
+        out = coef[0].take(i, axis=0)
+        for c in coef[1:]:
+            out *= s
+            out += c.take(i, axis=0)
+        return out
+
+    def species_enthalpy(self, T) -> np.ndarray:
+        """Each case's :meth:`GasMixture.species_enthalpy` at its temperatures ``T`` (leading
+        axis: the cases), J/kg."""
+        T, i, s, lead = self._located(T)
+        out = self._horner(self._stack._h, i, s)
+        if not (T.size and T_MIN <= T.min() and T.max() <= T_MAX):
+            out += self._stack._cp_lo[lead] * np.minimum(T - T_MIN, 0.0)[..., None]
+            out += self._stack._cp_hi[lead] * np.maximum(T - T_MAX, 0.0)[..., None]
+        return out
+
+    def species_cp(self, T) -> np.ndarray:
+        """Each case's :meth:`GasMixture.species_cp` at ``T`` (leading axis: the cases),
+        J/(kg K)."""
+        _, i, s, _ = self._located(T)
+        return self._horner(self._stack._cp, i, s)
 
 
 @dataclass(frozen=True)

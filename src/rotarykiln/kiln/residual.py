@@ -237,6 +237,10 @@ class KilnResidual:
         new.bed_scale = float(new.bed_in.sum())
         new.gas_scale = float(new.gas_inlet.sum())
         new.flow_in = {s: float(k.feed.flows.get(s, 0.0)) for s in self.species.bed_names}
+        flame = k.firing.flame
+        dissociation = flame.dissociation if flame is not None else None
+        if dissociation is not self.mixture.dissociation:  # another burnt gas
+            new.mixture = mixture_of(self.gas_names, self.species, dissociation)
         release = release_per_cell(k.firing.heat_release, k.firing.profile, self.z, self.dz)
         new.grid = dataclasses.replace(self.grid, heat_release=release)
         new.bed_source, new.bed_source_faces = new._bed_sources()
@@ -375,11 +379,12 @@ class KilnResidual:
             changes["omega"] = omega
         return dataclasses.replace(self.exchange, **changes) if changes else self.exchange
 
-    def coefficients(self, tg, tb, tw, g_mean, check=False, geo=None):
-        """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell means."""
+    def coefficients(self, tg, tb, tw, g_mean, check=False, geo=None, omega=None):
+        """Heat transfer coefficients (W/(m2 K)) and gas emissivity at cell means (at the
+        rotation ``omega``, rad/s, default the kiln's: a batch's own per case)."""
         geo = geo or self.grid
         gas = self.gas_state(g_mean, geo)
-        return self.exchange_of(geo).coefficients(gas, tg, tb, tw, check=check)
+        return self.exchange_of(geo, omega).coefficients(gas, tg, tb, tw, check=check)
 
     # --- chemistry ------------------------------------------------------------------------------
     def rates(

@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 
 __all__ = [
     "MODELS",
@@ -73,7 +73,7 @@ def kiln_solutions(cases, warnings_out=None, *, base=None, changes=None) -> list
     from rotarykiln.kiln.from_case import kiln_from_case
     from rotarykiln.kiln.steady.batch import solve_batch
 
-    cases = list(cases)
+    cases = cases if isinstance(cases, Sequence) else list(cases)
     caught = warnings_out if warnings_out is not None else [[] for _ in cases]
     out: list = [None] * len(cases)
     by_cells: dict[int, list] = {}
@@ -83,7 +83,7 @@ def kiln_solutions(cases, warnings_out=None, *, base=None, changes=None) -> list
             base_case = parse_case(base)
         except Exception:  # the base alone is refused: each case parsed as it is
             base_case = None
-    for i, case in enumerate(cases):
+    for i in range(len(cases)):
         with warnings.catch_warnings(record=True) as w:
             warnings.simplefilter("always")
             try:
@@ -91,9 +91,9 @@ def kiln_solutions(cases, warnings_out=None, *, base=None, changes=None) -> list
                     try:
                         parsed = case_with(base_case, changes[i])
                     except Exception:  # a path case_with does not take: the whole dict
-                        parsed = parse_case(case)
+                        parsed = parse_case(cases[i])
                 else:
-                    parsed = parse_case(case)
+                    parsed = parse_case(cases[i])
                 kiln, cells = kiln_from_case(parsed)
                 by_cells.setdefault(cells, []).append((i, kiln))
             except Exception as exc:

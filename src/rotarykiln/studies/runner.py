@@ -126,13 +126,8 @@ def _run_batched(func, base, specs, create) -> list[dict]:
         {"case_id": s.case_id, "group": s.group, "outputs": {}, "error": "", "warnings": ""}
         for s in specs
     ]
-    cases, where = [], []
-    for i, s in enumerate(specs):
-        try:
-            cases.append(with_values(base, s.values, create=create))
-            where.append(i)
-        except Exception as exc:
-            _error_into(rows[i], exc)
+    where = list(range(len(specs)))  # run_sweep checked every path set up front
+    cases = _CaseDicts(base, [s.values for s in specs], create)
     caught: list[list] = [[] for _ in cases]
     with warnings.catch_warnings(record=True) as shared:
         warnings.simplefilter("always")
@@ -154,6 +149,24 @@ def _run_batched(func, base, specs, create) -> list[dict]:
     for r in rows:
         r["elapsed_s"] = elapsed
     return rows
+
+
+class _CaseDicts(Sequence):
+    """The case dicts of a chunk (the base with each case's values set), each made when
+    asked for: a batched model that builds its cases from the base and their changes
+    (:func:`rotarykiln.studies.models.kiln_solutions`) never asks, and a thousand deep
+    copies of the base are saved."""
+
+    def __init__(self, base: Mapping, values: list, create: bool):
+        self.base, self.values, self.create = base, values, create
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[k] for k in range(*i.indices(len(self)))]
+        return with_values(self.base, self.values[i], create=self.create)
 
 
 class _unbatched:

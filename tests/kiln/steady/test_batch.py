@@ -175,10 +175,10 @@ def test_kilns_of_different_structures_are_split_not_refused():
             _same_solution(sol, solve_kiln(k, 40), atol=1e-6)
 
 
-def test_other_fuel_flows_start_from_their_neighbour_and_agree_with_single_solves(monkeypatch):
-    """Each fuel flow burns to another gas (its own dissociation heat: its own structure), so
-    no two of these kilns share a batch; each but the first starts by Newton from the nearest
-    solved one (same unknowns), without the continuation, and lands on its own root."""
+def test_other_fuel_flows_share_a_batch_each_with_its_own_dissociation_heat(monkeypatch):
+    """Each fuel flow burns to another gas (its own dissociation heat): the kilns still share a
+    batch (each case's own gas enthalpy, :class:`~rotarykiln.kiln.gas_mixture.CaseMixtures`),
+    only the first is solved alone, and each lands on its own root."""
     from rotarykiln.case import case_with
     from rotarykiln.kiln.steady import batch as B
 
@@ -189,8 +189,8 @@ def test_other_fuel_flows_start_from_their_neighbour_and_agree_with_single_solve
     ]
     cells = kiln_from_case(base)[1]
     residuals = [KilnResidual(k, cells) for k in kilns]
-    assert structure_groups(residuals) == [[0], [1], [2], [3]]
-    assert all(B.same_layout(residuals[0], r) for r in residuals)
+    assert len({id(r.mixture.dissociation) for r in residuals}) == 4
+    assert structure_groups(residuals) == [[0, 1, 2, 3]]
     alone, original = [], B._alone
     monkeypatch.setattr(B, "_alone", lambda res, *a: alone.append(res) or original(res, *a))
     with warnings.catch_warnings():
@@ -200,6 +200,29 @@ def test_other_fuel_flows_start_from_their_neighbour_and_agree_with_single_solve
         for k, sol in zip(kilns, out, strict=True):
             _same_solution(sol, solve_kiln(k, cells, tol=TOL))
             assert abs(sol.energy_closure) <= 1e-6
+    outlets = [s.gas_outlet_temperature for s in out]
+    assert outlets == sorted(outlets)  # more fuel, a hotter kiln: the cases are not one
+
+
+def test_kilns_of_another_structure_start_from_their_neighbour(monkeypatch):
+    """Another wall emissivity is another structure (no batch), but the same unknowns: each
+    case but the first starts by Newton from the nearest solved one, without the
+    continuation, and lands on its own root."""
+    from rotarykiln.kiln.steady import batch as B
+
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    kilns = [kiln.replace(wall__emissivity=e) for e in (0.8, 0.85, 0.9)]
+    residuals = [KilnResidual(k, cells) for k in kilns]
+    assert structure_groups(residuals) == [[0], [1], [2]]
+    assert all(B.same_layout(residuals[0], r) for r in residuals)
+    alone, original = [], B._alone
+    monkeypatch.setattr(B, "_alone", lambda res, *a: alone.append(res) or original(res, *a))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        out = solve_batch(kilns, cells, tol=TOL)
+        assert len(alone) == 1
+        for k, sol in zip(kilns, out, strict=True):
+            _same_solution(sol, solve_kiln(k, cells, tol=TOL))
 
 
 def test_batch_sizes_are_checked_and_reduced_to_fit_memory(caplog):
@@ -227,3 +250,29 @@ def test_warnings_are_kept_per_case():
     # Barr's 2.5 mm sand lies outside the particle sizes of Li et al.'s fit: each case says so
     for ws in caught:
         assert any("Li et al." in str(w.message) for w in ws)
+
+
+def test_a_batch_warns_each_case_of_what_its_own_solve_warns():
+    """The closures' ranges are checked once for the whole batch and again only for the cases
+    a warning's mask names: each case keeps the warnings of its own solve, no more, no less
+    (Tscheng and Watkinson's gas Reynolds range, left by the lower gas flows only)."""
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    factors = [(1.0, 1.0), (0.6, 1.0), (1.4, 1.0), (0.8, 2.0), (1.2, 0.5), (0.7, 0.7)]
+    kilns = [
+        kiln.replace(
+            gas__flows={s: v * f for s, v in kiln.gas.flows.items()},
+            drum__omega=kiln.drum.omega * w,
+        )
+        for f, w in factors
+    ]
+    caught: list = []
+    solve_batch(kilns, cells, warnings_out=caught)
+    warned = []
+    for k, ws in zip(kilns, caught, strict=True):
+        with warnings.catch_warnings(record=True) as alone:
+            warnings.simplefilter("always")
+            solve_kiln(k, cells)
+        assert sorted({str(w.message) for w in ws}) == sorted({str(w.message) for w in alone})
+        warned.append(any("Re =" in str(w.message) for w in ws))
+    assert warned == [False, True, False, True, False, True]
+

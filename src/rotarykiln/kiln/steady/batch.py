@@ -25,6 +25,7 @@ grid sequencing) and, if that fails too, returns its own
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import functools
 import logging
@@ -36,6 +37,7 @@ import numpy as np
 from scipy.linalg import lapack
 
 from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.kiln.gas_mixture import CaseMixtures
 from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import BoundaryInputs
 from rotarykiln.kiln.residual import KilnResidual
@@ -156,8 +158,8 @@ def same_structure(a: KilnResidual, b: KilnResidual) -> bool:
         return False
     if a.bed_sources != b.bed_sources:  # a burner's ash: a source of its own
         return False
-    if _dissociation(ka) != _dissociation(kb):
-        return False
+    if (_dissociation(ka) is None) != (_dissociation(kb) is None):
+        return False  # (two dissociation heats: each case's own, CaseMixtures)
     return _equal(ka, kb)
 
 
@@ -196,7 +198,9 @@ def _fits(base: KilnResidual, kiln: Kiln) -> bool:
     ash = float(getattr(kiln.firing.flame, "ash_flow", 0.0) or 0.0)
     if base.bed_sources != ({"ash": ash} if ash > 0 else {}):
         return False
-    return _dissociation(kb) == _dissociation(kiln) and _equal(kb, kiln)
+    if (_dissociation(kb) is None) != (_dissociation(kiln) is None):
+        return False
+    return _equal(kb, kiln)
 
 
 def batch_residuals(kilns: Sequence[Kiln], n_cells: int):
@@ -278,27 +282,77 @@ class BatchResidual:
             if base.depth is not None:
                 self.row_factor[b, base.i_depth] = q
         self.q_ref = np.array([r.q_ref for r in self.residuals])
+        # burnt gases of other compositions (another fuel or air flow): each case's own
+        # dissociation heat, one gather for all (its enthalpy and c_p, to the last bit)
+        self.mixtures = None
+        if any(r.mixture is not base.mixture for r in self.residuals):
+            self.mixtures = CaseMixtures([r.mixture for r in self.residuals])
 
-    def full(self, x, cases) -> list:
+    def _of(self, cases):
+        """The residual evaluating the cases ``cases``: the base's, with each case's own gas
+        mixture when they differ."""
+        if self.mixtures is None:
+            return self.base
+        res = copy.copy(self.base)
+        res.mixture = self.mixtures.take(cases)
+        return res
+
+    def full(self, x, cases, flags: list | None = None) -> list:
         """Per case of ``cases``, what ``KilnResidual.evaluate(x[None], full=True)`` of its
-        own residual gives at its unknowns ``x`` (b, n, nv): all evaluated in one call."""
+        own residual gives at its unknowns ``x`` (b, n, nv): all evaluated in one call.
+
+        ``flags``: filled with one bool per case, whether the closures' validity ranges may
+        warn for it (:meth:`closures_may_warn`)."""
         xf = self.x_factor[cases][:, None, :]
-        R, fl, prod, rate, faces = self.base.evaluate(
-            (x * xf)[:, None], full=True, inputs=self.inputs.take(cases)
-        )
+        inputs = self.inputs.take(cases)
+        xs = (x * xf)[:, None]
+        R, fl, prod, rate, faces = self._of(cases).evaluate(xs, full=True, inputs=inputs)
         R = R * self.row_factor[cases][:, None, None, :]
         n = self.base.n
+        if flags is not None:
+            flags[:] = self.closures_may_warn(xs, fl, faces[3], inputs, cases)
         out = []
         for b in range(len(cases)):
             flux = {k: np.broadcast_to(v, R.shape[:2] + (n,))[b] for k, v in fl.items()}
             out.append((R[b], flux, prod[b], rate[b], tuple(f[b] for f in faces)))
         return out
 
+    def closures_may_warn(self, xs, fl, qg, inputs, cases) -> np.ndarray:
+        """Whether each case's closures may be outside their validated ranges (bool per case):
+        the ranges checked once for all the cases (their unknowns ``xs`` (b, 1, n, nv), cell
+        fluxes ``fl``, face gas flows ``qg``, inputs ``inputs``; their indices ``cases``),
+        each warning's mask of the
+        values outside telling its cases (a warning without a mask per case: every case). A
+        case not flagged would warn of nothing checked alone; a flagged one is checked alone,
+        for its own warnings."""
+        b = xs.shape[0]
+        g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
+        base = self._of(cases)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            base.coefficients(
+                fl["t_gas_mean"],
+                fl["t_bed_mean"],
+                xs[..., 2],
+                g_mean,
+                check=True,
+                geo=base.geometry(xs),
+                omega=inputs.omega,
+            )
+        flags = np.zeros(b, dtype=bool)
+        for w in caught:
+            mask = getattr(w.message, "mask", None)
+            if mask is not None and np.ndim(mask) >= 2 and np.shape(mask)[0] == b:
+                flags |= np.asarray(mask).reshape(b, -1).any(1)
+            else:
+                flags[:] = True
+        return flags
+
     def __call__(self, x, cases) -> np.ndarray:
         """Residual of the cases ``cases`` (index array) at their unknowns ``x`` (b, C, n,
         nv), W (energy rows) and scaled flows (species rows)."""
         xf = self.x_factor[cases][:, None, None, :]
-        R = self.base.evaluate(x * xf, inputs=self.inputs.take(cases))
+        R = self._of(cases).evaluate(x * xf, inputs=self.inputs.take(cases))
         return R * self.row_factor[cases][:, None, None, :]
 
 
@@ -403,6 +457,7 @@ def newton_batch(
     rel_step: float = 1e-7,
     local=None,
     start_factors=None,
+    factors_out: list | None = None,
     **_,
 ):
     """Damped Newton on B block-tridiagonal systems at once: per case the iteration of
@@ -431,7 +486,9 @@ def newton_batch(
         each instead of three.
     start_factors : optional
         LU factors of a Jacobian every case starts with (a neighbouring solution's), instead
-        of evaluating its own at its start.
+        of evaluating its own at its start; or a list of them, one per case.
+    factors_out : list, optional
+        Filled with each case's last LU factors (those its last step was taken with).
 
     Returns
     -------
@@ -473,8 +530,8 @@ def newton_batch(
     norm = np.max(np.abs(R), axis=(1, 2)) / scale
     iterations = np.zeros(B, dtype=int)
     status = np.zeros(B, dtype=int)  # 0 running, 1 converged, -1 failed
-    factors: list = [start_factors] * B
-    fresh = np.full(B, start_factors is None)  # needs its Jacobian now
+    factors: list = list(start_factors) if isinstance(start_factors, list) else [start_factors] * B
+    fresh = np.array([f is None for f in factors])  # needs its Jacobian now
     for it in range(1, max_iter + 1):
         status[(status == 0) & (norm <= tol)] = 1
         status[(status == 0) & ~np.isfinite(norm)] = -1
@@ -549,6 +606,8 @@ def newton_batch(
         slow = moved[norm[moved] > CHORD_RATE * old[move]]
         fresh[slow] = True
     status[(status == 0) & (norm <= tol)] = 1
+    if factors_out is not None:
+        factors_out[:] = factors
     return x, iterations, norm, status == 1
 
 
@@ -726,6 +785,84 @@ def _from_neighbour(residuals, i, solved, out, caught, opts):
     return result
 
 
+#: Cases of a chunk solved first, from the nearest case solved before (its Jacobian's LU
+#: kept), so that the others start from a near one: the square root of the chunk's size.
+def _seeds(chunk: list, key: dict, known: list) -> list:
+    """The cases of ``chunk`` solved first (:func:`_solve_group`): about the square root of
+    its size, spread over its inputs (``key``: each case's scaled inputs) by farthest-point
+    sampling from the cases ``known`` already (their scaled inputs)."""
+    k = int(math.isqrt(len(chunk)))
+    if k < 2:
+        return []
+    points = np.array([key[i] for i in chunk])
+    gap = np.min(((points[:, None, :] - np.array(known)[None, :, :]) ** 2).sum(-1), axis=1)
+    picked = []
+    for _ in range(k):
+        m = int(np.argmax(gap))
+        picked.append(chunk[m])
+        gap = np.minimum(gap, ((points - points[m]) ** 2).sum(-1))
+    return picked
+
+
+def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, local, solved):
+    """Solve the cases ``chunk`` of one structure together, each from the nearest case with
+    kept LU factors (``lu``: case -> factors; its solution the start, its Jacobian the
+    first); a case that fails there is solved alone. The solved cases are appended to
+    ``solved``; the chunk's last factors are kept in ``lu`` when it is a chunk's seeds (less
+    than a tenth of the cases)."""
+    with_lu = list(lu)
+    known = np.array([key[j] for j in with_lu])
+    wanted = np.array([key[i] for i in chunk])
+    nearest = ((known[None, :, :] - wanted[:, None, :]) ** 2).sum(-1).argmin(1)
+    starts, start_factors = [], []
+    for i, m in zip(chunk, nearest, strict=True):
+        near = with_lu[m]
+        p = _physical(residuals[near], out[near].fluxes["x"])
+        starts.append(_unknowns(residuals[i], p))
+        start_factors.append(lu[near])
+    rs = [residuals[i] for i in chunk]
+    F = BatchResidual(rs)
+    kw = newton_options(rs[0], tol=opts["tol"], max_iter=opts["max_iter"])
+    factors: list = []
+    x, its, _, ok = newton_batch(
+        F,
+        np.stack(starts),
+        F.q_ref,
+        local=local,
+        start_factors=start_factors,
+        factors_out=factors,
+        **kw,
+    )
+    done = np.flatnonzero(ok)
+    flags: list = []
+    evaluated = dict(zip(done, F.full(x[done], done, flags), strict=True)) if done.size else {}
+    check = dict(zip(done, flags, strict=True))
+    keep = len(chunk) <= max(1, len(residuals) // 10)
+    for b, i in enumerate(chunk):
+        if ok[b]:
+            res = residuals[i]
+            out[i] = _recorded(
+                caught[i],
+                lambda res=res, xb=x[b], n_it=int(its[b]), ev=evaluated[b], c=check[b]: (
+                    finish_solution(
+                        res,
+                        xb,
+                        n_it,
+                        check_balances=opts["check_balances"],
+                        evaluated=ev,
+                        check_closures=c,
+                    )
+                ),
+            )
+        if not ok[b] or isinstance(out[i], ConvergenceError):
+            caught[i].clear()
+            out[i] = _alone(residuals[i], caught[i], opts)
+        if not isinstance(out[i], ConvergenceError):
+            solved.append(i)
+            if keep and ok[b] and factors[b] is not None:
+                lu[i] = factors[b]
+
+
 def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     """Solve the cases ``group`` of one structure into ``out`` (their warnings into
     ``caught``): the first from the nearest case ``solved_before`` (other structures) of the
@@ -760,37 +897,12 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
         anchor, x_first, np.array([0]), R_first, local=local, step_floor=kw0["step_floor"]
     )[0]
     key = {i: _scaled_inputs(residuals[i]) for i in group}
+    lu = {first: start_lu}  # the LU factors kept: the first case's and each chunk's seeds'
     for first_case in range(0, len(rest), size):
         chunk = rest[first_case : first_case + size]
-        starts = []
-        known = np.array([key[j] for j in solved])
-        wanted = np.array([key[i] for i in chunk])
-        nearest = ((known[None, :, :] - wanted[:, None, :]) ** 2).sum(-1).argmin(1)
-        for i, m in zip(chunk, nearest, strict=True):
-            near = solved[m]
-            p = _physical(residuals[near], out[near].fluxes["x"])
-            starts.append(_unknowns(residuals[i], p))
-        rs = [residuals[i] for i in chunk]
-        F = BatchResidual(rs)
-        kw = newton_options(rs[0], tol=opts["tol"], max_iter=opts["max_iter"])
-        x, its, _, ok = newton_batch(
-            F, np.stack(starts), F.q_ref, local=local, start_factors=start_lu, **kw
-        )
-        done = np.flatnonzero(ok)
-        evaluated = dict(zip(done, F.full(x[done], done), strict=True)) if done.size else {}
-        for b, i in enumerate(chunk):
-            if ok[b]:
-                res = residuals[i]
-                out[i] = _recorded(
-                    caught[i],
-                    lambda res=res, xb=x[b], n_it=int(its[b]), ev=evaluated[b]: finish_solution(
-                        res, xb, n_it, check_balances=opts["check_balances"], evaluated=ev
-                    ),
-                )
-            if not ok[b] or isinstance(out[i], ConvergenceError):
-                caught[i].clear()
-                out[i] = _alone(residuals[i], caught[i], opts)
-            if not isinstance(out[i], ConvergenceError):
-                solved.append(i)
+        seeds = _seeds(chunk, key, [key[j] for j in lu])
+        for part in (seeds, [i for i in chunk if i not in set(seeds)]):
+            if part:
+                _solve_chunk(residuals, part, key, lu, out, caught, opts, local, solved)
     if isinstance(solved_before, list):
         solved_before.extend(solved)

@@ -202,20 +202,23 @@ def finish_solution(
     *,
     check_balances: bool = True,
     evaluated=None,
+    check_closures: bool = True,
 ) -> KilnSolution:
     """The :class:`KilnSolution` of the converged unknowns ``x`` (n, nv) of ``res`` after
     ``total`` Newton iterations: the profiles, the bound and oscillation checks, the closures'
     validity ranges, the global balances (checked with ``check_balances``: ConvergenceError
     beyond 1e-8 for the elements, 1e-6 for the energy) and the energy sheet. ``evaluated``:
     ``res.evaluate(x[None], full=True)`` when already computed (a batch evaluates all its
-    cases at once)."""
+    cases at once); ``check_closures`` False: the closures' ranges are known to hold (a
+    batch checked all its cases at once, :meth:`~rotarykiln.kiln.steady.batch.BatchResidual.
+    full`)."""
     kiln, q_ref, i0 = res.kiln, res.q_ref, res.i_species
     if evaluated is None:
         evaluated = res.evaluate(x[None], full=True)
     R, fl, prod, rate, (tb_n, tg_n, qb, qg) = evaluated
     R, prod, rate = R[0], prod[0], rate[0]
     tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
-    fl = {key: np.broadcast_to(v, (1, res.n))[0] * np.ones(res.n) for key, v in fl.items()}
+    fl = {key: np.broadcast_to(v, (1, res.n))[0].astype(float) for key, v in fl.items()}
     steady.check_finite(
         {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
     )
@@ -225,7 +228,8 @@ def finish_solution(
     # validity ranges of the heat-transfer closures, checked once on the converged state
     g_mean = 0.5 * (np.maximum(qg[:-1], 0.0) + np.maximum(qg[1:], 0.0))
     geo = res.geometry(x)
-    res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True, geo=geo)
+    if check_closures:
+        res.coefficients(fl["t_gas_mean"], fl["t_bed_mean"], x[:, 2], g_mean, check=True, geo=geo)
     gas = res.gas_state(g_mean, geo)
     fl["gas_velocity"] = gas.mass_flux / gas.density(fl["t_gas_mean"])  # m/s, cells
     for solid in {id(s): s for s in kiln.bed.solids.values()}.values():
@@ -435,13 +439,15 @@ def zigzag(values, amplitude: float) -> tuple[int, int]:
     (0, 0)
     """
     d = np.diff(np.asarray(values, dtype=float))
-    turn = (d[:-1] * d[1:] < 0.0) & (np.abs(d[:-1]) > amplitude) & (np.abs(d[1:]) > amplitude)
-    best, start, run = 0, 0, 0
-    for i, t in enumerate(turn):
-        run = run + 1 if t else 0
-        if run > best:
-            best, start = run, i - run + 2
-    return best, start
+    big = np.abs(d) > amplitude
+    turn = (d[:-1] * d[1:] < 0.0) & big[:-1] & big[1:]
+    if not turn.any():
+        return 0, 0
+    # runs of turns: starts and ends of the True stretches, the first longest one
+    edges = np.diff(np.concatenate([[0], turn.astype(np.int8), [0]]))
+    starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    k = int(np.argmax(ends - starts))
+    return int(ends[k] - starts[k]), int(starts[k] + 1)
 
 
 def _check_no_oscillation(res: KilnResidual, profiles: dict, iterations) -> None:
