@@ -275,4 +275,3 @@ def test_a_batch_warns_each_case_of_what_its_own_solve_warns():
         assert sorted({str(w.message) for w in ws}) == sorted({str(w.message) for w in alone})
         warned.append(any("Re =" in str(w.message) for w in ws))
     assert warned == [False, True, False, True, False, True]
-
