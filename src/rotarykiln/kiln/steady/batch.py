@@ -66,6 +66,11 @@ BYTES_PER_ENTRY = 400
 #: A kept Jacobian (chord iteration) is evaluated again after a step that reduced the
 #: residual by less than this factor.
 CHORD_RATE = 0.1
+#: With Broyden updates, a kept Jacobian is evaluated again after a step that reduced the
+#: residual by less than this factor.
+BROYDEN_RATE = 0.5
+#: Broyden updates of a kept Jacobian in a batch's Newton iteration (:func:`newton_batch`).
+BROYDEN_UPDATES = 12
 #: Kiln fields that are the boundary inputs of a batch (they may differ between its cases).
 BOUNDARY_FIELDS = frozenset(
     {
@@ -437,9 +442,59 @@ def _factor(ab: np.ndarray, bw: int):
     return (lu, piv) if info == 0 else None
 
 
-def _solve(factors, rhs: np.ndarray, bw: int):
-    x, info = lapack.dgbtrs(factors[0], bw, bw, rhs, factors[1])
+def _solve(factors, rhs: np.ndarray, bw: int, trans: int = 0):
+    x, info = lapack.dgbtrs(factors[0], bw, bw, rhs, factors[1], trans=trans)
     return x if info == 0 else None
+
+
+class _Broyden:
+    r"""Broyden's (good) updates of the inverse of a kept Jacobian, per case.
+
+    .. math:: H_{k+1} = H_k + \frac{(s_k - H_k y_k)\, s_k^T H_k}{s_k^T H_k y_k}
+
+    with :math:`s_k` the step taken and :math:`y_k` the change of the residual; :math:`H_0` the
+    kept LU factors, the updates :math:`H_k = H_0 + \sum_i a_i b_i^T` kept as vector pairs,
+    so that each solve costs one banded solve and a few dot products. The iteration stays on
+    the secant of each step: superlinear where a kept Jacobian (a neighbour's, or its own from
+    earlier iterates) alone contracts linearly.
+
+    References
+    ----------
+    C.G. Broyden, Math. Comp. 19 (1965) 577-593; J.E. Dennis, R.B. Schnabel (1983), ch. 8.
+    """
+
+    def __init__(self, cases: int, bw: int):
+        self.pairs: list[list] = [[] for _ in range(cases)]
+        self.bw = bw
+
+    def reset(self, c: int) -> None:
+        self.pairs[c] = []
+
+    def apply(self, factors, c: int, r: np.ndarray):
+        """:math:`H_k r` of case ``c`` (r flat), or None where the banded solve fails."""
+        out = _solve(factors, r.reshape(-1, 1), self.bw)
+        if out is None:
+            return None
+        out = out[:, 0]
+        for a, b in self.pairs[c]:
+            out = out + a * (b @ r)
+        return out
+
+    def update(self, factors, c: int, s: np.ndarray, y: np.ndarray) -> None:
+        """Add the secant of the step ``s`` and residual change ``y`` (flat) of case ``c``."""
+        hy = self.apply(factors, c, y)
+        if hy is None:
+            return
+        denom = float(s @ hy)
+        if not np.isfinite(denom) or abs(denom) <= 1e-12 * np.linalg.norm(s) * np.linalg.norm(hy):
+            return
+        bt = _solve(factors, s.reshape(-1, 1), self.bw, trans=1)
+        if bt is None:
+            return
+        bt = bt[:, 0]
+        for a, b in self.pairs[c]:
+            bt = bt + b * (a @ s)
+        self.pairs[c].append(((s - hy) / denom, bt))
 
 
 def newton_batch(
@@ -458,6 +513,7 @@ def newton_batch(
     local=None,
     start_factors=None,
     factors_out: list | None = None,
+    broyden: int = 0,
     **_,
 ):
     """Damped Newton on B block-tridiagonal systems at once: per case the iteration of
@@ -489,6 +545,11 @@ def newton_batch(
         of evaluating its own at its start; or a list of them, one per case.
     factors_out : list, optional
         Filled with each case's last LU factors (those its last step was taken with).
+    broyden : int
+        Up to this many Broyden updates of a kept Jacobian (:class:`_Broyden`): its own is
+        evaluated again only when a step reduced the residual by less than
+        :data:`BROYDEN_RATE`, or after that many updates (0: the chord iteration, a new
+        Jacobian below :data:`CHORD_RATE`).
 
     Returns
     -------
@@ -532,6 +593,8 @@ def newton_batch(
     status = np.zeros(B, dtype=int)  # 0 running, 1 converged, -1 failed
     factors: list = list(start_factors) if isinstance(start_factors, list) else [start_factors] * B
     fresh = np.array([f is None for f in factors])  # needs its Jacobian now
+    secant = _Broyden(B, bw)
+    rate = BROYDEN_RATE if broyden else CHORD_RATE
     for it in range(1, max_iter + 1):
         status[(status == 0) & (norm <= tol)] = 1
         status[(status == 0) & ~np.isfinite(norm)] = -1
@@ -542,6 +605,7 @@ def newton_batch(
         if need.size:
             for c, f in zip(need, jacobian_factors(F, x[need], need, R[need], **jkw), strict=True):
                 factors[c] = f
+                secant.reset(c)
                 if f is None:
                     status[c] = -1
             fresh[need] = False
@@ -551,7 +615,7 @@ def newton_batch(
         dx = np.empty((act.size, n, nv))
         ok = np.ones(act.size, dtype=bool)
         for i, c in enumerate(act):
-            d = _solve(factors[c], -R[c].reshape(-1, 1), bw)
+            d = secant.apply(factors[c], c, -R[c].ravel())
             ok[i] = d is not None and bool(np.all(np.isfinite(d)))
             if ok[i]:
                 dx[i] = d.reshape(n, nv)
@@ -601,9 +665,15 @@ def newton_batch(
             else:
                 move[i] = True  # the smallest step, as newton_banded takes it
         moved = act[move]
+        if broyden:
+            for c, xn, rn in zip(moved, xt_all[move], Rt_all[move], strict=True):
+                if len(secant.pairs[c]) >= broyden:
+                    fresh[c] = True
+                else:
+                    secant.update(factors[c], c, (xn - x[c]).ravel(), (rn - R[c]).ravel())
         x[moved], R[moved], norm[moved] = xt_all[move], Rt_all[move], nt_norm[move]
         iterations[moved] = it
-        slow = moved[norm[moved] > CHORD_RATE * old[move]]
+        slow = moved[norm[moved] > rate * old[move]]
         fresh[slow] = True
     status[(status == 0) & (norm <= tol)] = 1
     if factors_out is not None:
@@ -831,6 +901,7 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, local, solved):
         local=local,
         start_factors=start_factors,
         factors_out=factors,
+        broyden=BROYDEN_UPDATES,
         **kw,
     )
     done = np.flatnonzero(ok)
