@@ -32,6 +32,13 @@ def test_sweep_command_writes_table_and_plot(tmp_path, capsys):
     assert (tmp_path / "sweep.csv").is_file() and (tmp_path / "sweep.png").is_file()
 
 
+def test_sweep_command_writes_no_plot_when_asked(tmp_path, capsys):
+    args = ["sweep", "--case", "charcoal_activation", "--model", MODEL, "--executor", "serial"]
+    args += ["--oat", "bed.residence_time=3000 s,6480 s", "--out", str(tmp_path), "--no-plots"]
+    assert main(args) == 0
+    assert (tmp_path / "sweep.csv").is_file() and not (tmp_path / "sweep.png").exists()
+
+
 def test_sweep_command_bad_arguments():
     from rotarykiln.commands.sweep import _load_model, _ranges
 

@@ -104,6 +104,7 @@ def register(sub) -> None:
     p.add_argument("--name", default="sweep", help="base name of the output files")
     p.add_argument("--json", action="store_true", help="print the table as JSON records")
     p.add_argument("--out", help="write NAME.csv (NAME.parquet if pyarrow) and NAME.png here")
+    p.add_argument("--no-plots", action="store_true", help="do not write NAME.png")
     p.set_defaults(func=run)
 
 
@@ -325,7 +326,7 @@ def run(args) -> int:
         raise
     if folder is not None:
         res.write(folder, name=args.name)
-        if chosen and len(res.failed) < len(res.frame):
+        if chosen and len(res.failed) < len(res.frame) and not args.no_plots:
             res.save_plot(folder / f"{args.name}.png", outputs=chosen)
     if args.json:
         print_json(res.frame.to_dict(orient="records"))
