@@ -67,3 +67,15 @@ def test_latin_hypercube_strata():
         latin_hypercube(["a=uniform(0, 1)"], 0)
     with pytest.raises(InputError, match="given once"):
         as_params(["a=uniform(0, 1)", "a=uniform(0, 2)"])
+
+
+@pytest.mark.parametrize(("d", "n", "seed"), [(1, 5, 0), (2, 200, 1), (8, 64, 7), (3, 1000, 12)])
+def test_the_latin_hypercube_is_scipys(d, n, seed):
+    """The design's points are scipy.stats.qmc.LatinHypercube's, draw for draw (drawn without
+    importing scipy.stats, which costs a sweep command more than its cases' set-up)."""
+    from scipy.stats import qmc
+
+    from rotarykiln.studies.design import unit_latin_hypercube
+
+    want = qmc.LatinHypercube(d=d, seed=seed).random(n)
+    assert np.array_equal(unit_latin_hypercube(d, n, seed), want)
