@@ -298,10 +298,15 @@ def test_broyden_updates_keep_the_secant_equation_and_reach_the_same_root():
             ab[bw + i - j, j] = dense[i, j]
     secant = _Broyden(1, bw)
     factors = _factor(ab, bw)
+    f = rng.normal(size=size)
     for _ in range(3):
-        s, y = rng.normal(size=size), rng.normal(size=size)
-        secant.update(factors, 0, s, y)
-        np.testing.assert_allclose(secant.apply(factors, 0, y), s, rtol=1e-10, atol=1e-12)
+        d = secant.direction(factors, 0, f)  # -H_k F_k
+        s, f_new = rng.normal(size=size), rng.normal(size=size)
+        secant.update(factors, 0, d, s, f_new)
+        np.testing.assert_allclose(secant.apply(factors, 0, f_new - f), s, rtol=1e-9, atol=1e-11)
+        # the next direction it found is -H_{k+1} F_{k+1}
+        np.testing.assert_allclose(secant.next[0], secant.apply(factors, 0, -f_new), rtol=1e-9)
+        f = f_new
 
     target = rng.uniform(300.0, 900.0, (2, 1, 1, 1))
 

@@ -450,25 +450,32 @@ def _solve(factors, rhs: np.ndarray, bw: int, trans: int = 0):
 class _Broyden:
     r"""Broyden's (good) updates of the inverse of a kept Jacobian, per case.
 
-    .. math:: H_{k+1} = H_k + \frac{(s_k - H_k y_k)\, s_k^T H_k}{s_k^T H_k y_k}
+    .. math:: H_{k+1} = H_k + c_k\,s_k^T H_k,\qquad
+              c_k = \frac{s_k - H_k y_k}{s_k^T H_k y_k}
 
     with :math:`s_k` the step taken and :math:`y_k` the change of the residual; :math:`H_0` the
-    kept LU factors, the updates :math:`H_k = H_0 + \sum_i a_i b_i^T` kept as vector pairs,
-    so that each solve costs one banded solve and a few dot products. The iteration stays on
-    the secant of each step: superlinear where a kept Jacobian (a neighbour's, or its own from
+    kept LU factors. :math:`H_k w` is :math:`H_0 w` followed by :math:`w \leftarrow w + c_j
+    (s_j^T w)` for the pairs kept, and :math:`H_k y_k = H_k F_{k+1} - H_k F_k = -z_k - d_k`
+    from the direction :math:`d_k = -H_k F_k` of the step and :math:`z_k = -H_k F_{k+1}`, which
+    also gives the next direction :math:`d_{k+1} = z_k + c_k (s_k^T z_k)`: one banded solve
+    per iteration (as C.T. Kelley's ``brsola`` stores its steps). The iteration stays on the
+    secant of each step: superlinear where a kept Jacobian (a neighbour's, or its own from
     earlier iterates) alone contracts linearly.
 
     References
     ----------
-    C.G. Broyden, Math. Comp. 19 (1965) 577-593; J.E. Dennis, R.B. Schnabel (1983), ch. 8.
+    C.G. Broyden, Math. Comp. 19 (1965) 577-593; J.E. Dennis, R.B. Schnabel (1983), ch. 8;
+    C.T. Kelley, Iterative Methods for Linear and Nonlinear Equations, SIAM (1995), ch. 7-8.
     """
 
     def __init__(self, cases: int, bw: int):
         self.pairs: list[list] = [[] for _ in range(cases)]
+        self.next: list = [None] * cases  # the direction of each case's next step, if known
         self.bw = bw
 
     def reset(self, c: int) -> None:
         self.pairs[c] = []
+        self.next[c] = None
 
     def apply(self, factors, c: int, r: np.ndarray):
         """:math:`H_k r` of case ``c`` (r flat), or None where the banded solve fails."""
@@ -476,25 +483,33 @@ class _Broyden:
         if out is None:
             return None
         out = out[:, 0]
-        for a, b in self.pairs[c]:
-            out = out + a * (b @ r)
+        for cj, sj in self.pairs[c]:
+            out = out + cj * (sj @ out)
         return out
 
-    def update(self, factors, c: int, s: np.ndarray, y: np.ndarray) -> None:
-        """Add the secant of the step ``s`` and residual change ``y`` (flat) of case ``c``."""
-        hy = self.apply(factors, c, y)
-        if hy is None:
+    def direction(self, factors, c: int, f: np.ndarray):
+        """:math:`-H_k F` of case ``c`` at its residual ``f`` (flat): the one its last update
+        gave, else computed."""
+        d = self.next[c]
+        self.next[c] = None
+        return d if d is not None else self.apply(factors, c, -f)
+
+    def update(self, factors, c: int, d: np.ndarray, s: np.ndarray, f_new: np.ndarray) -> None:
+        """The secant of case ``c``'s step ``s`` (flat) taken along the direction ``d`` to the
+        residual ``f_new``: a pair kept and the next direction found (no update where the
+        secant is degenerate: the next direction is then computed afresh)."""
+        z = self.apply(factors, c, -f_new)
+        if z is None:
             return
-        denom = float(s @ hy)
-        if not np.isfinite(denom) or abs(denom) <= 1e-12 * np.linalg.norm(s) * np.linalg.norm(hy):
+        denom = float(s @ (d - z))
+        if not np.isfinite(denom) or abs(denom) <= 1e-12 * np.linalg.norm(s) * np.linalg.norm(
+            d - z
+        ):
+            self.next[c] = z
             return
-        bt = _solve(factors, s.reshape(-1, 1), self.bw, trans=1)
-        if bt is None:
-            return
-        bt = bt[:, 0]
-        for a, b in self.pairs[c]:
-            bt = bt + b * (a @ s)
-        self.pairs[c].append(((s - hy) / denom, bt))
+        cj = (s + z - d) / denom
+        self.pairs[c].append((cj, s))
+        self.next[c] = z + cj * (s @ z)
 
 
 def newton_batch(
@@ -615,7 +630,7 @@ def newton_batch(
         dx = np.empty((act.size, n, nv))
         ok = np.ones(act.size, dtype=bool)
         for i, c in enumerate(act):
-            d = secant.apply(factors[c], c, -R[c].ravel())
+            d = secant.direction(factors[c], c, R[c].ravel())
             ok[i] = d is not None and bool(np.all(np.isfinite(d)))
             if ok[i]:
                 dx[i] = d.reshape(n, nv)
@@ -666,11 +681,11 @@ def newton_batch(
                 move[i] = True  # the smallest step, as newton_banded takes it
         moved = act[move]
         if broyden:
-            for c, xn, rn in zip(moved, xt_all[move], Rt_all[move], strict=True):
+            for c, d, xn, rn in zip(moved, dx[move], xt_all[move], Rt_all[move], strict=True):
                 if len(secant.pairs[c]) >= broyden:
                     fresh[c] = True
                 else:
-                    secant.update(factors[c], c, (xn - x[c]).ravel(), (rn - R[c]).ravel())
+                    secant.update(factors[c], c, d.ravel(), (xn - x[c]).ravel(), rn.ravel())
         x[moved], R[moved], norm[moved] = xt_all[move], Rt_all[move], nt_norm[move]
         iterations[moved] = it
         slow = moved[norm[moved] > rate * old[move]]
