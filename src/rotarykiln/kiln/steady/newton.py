@@ -94,12 +94,17 @@ def band_entries(n: int, nv: int):
     return src, rows, cols, step
 
 
-def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
+def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0, central=False):
+    """The banded Jacobian of ``F`` at ``x`` by coloured forward differences, or central ones
+    (``central``: second-order accurate, twice the residual work)."""
     n, nv = x.shape
     h = rel_step * np.maximum(np.abs(x), step_floor)
     _, src, dst, step = _jacobian_pattern(n, nv)
     X = colour_batch(x, h)
-    dR = F(X) - R0  # [c, v, row cell, equation]
+    if central:
+        dR = 0.5 * (F(X) - F(colour_batch(x, -h)))
+    else:
+        dR = F(X) - R0  # [c, v, row cell, equation]
     bw = 2 * nv - 1
     ab = np.zeros((2 * bw + 1, n * nv))
     ab.ravel()[dst] = dR.ravel()[src] / h.ravel()[step]
@@ -195,13 +200,16 @@ def newton_banded(
     history = [norm]
     n_jac = 0
     log.info("Newton on %d cells x %d unknowns: residual %.3g (tolerance %.3g)", n, nv, norm, tol)
-    for it in range(1, max_iter + 1):
+    central = False  # forward differences until a line search fails on them
+    it = 0
+    while it < max_iter:
+        it += 1
         if norm <= tol:
             log.info("Newton converged in %d iterations: residual %.3g", it - 1, norm)
             return x, NewtonReport(it - 1, norm, tuple(history), n_jac)
         if not np.isfinite(norm):
             break
-        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor)
+        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor, central=central)
         n_jac += 1
         try:
             dx = solve_banded((bw, bw), ab, -R.ravel(), check_finite=False).reshape(n, nv)
@@ -226,6 +234,13 @@ def newton_banded(
                 break
             lam *= 0.5
         if not accepted:
+            if not central:
+                # the forward differences of a stiff rate (a calcination near its equilibrium)
+                # may be too coarse for the last digits: again with central differences
+                log.info("  line search failed: the Jacobian again by central differences")
+                central = True
+                it -= 1
+                continue
             if norm <= STAGNATION_FACTOR * tol:
                 # Newton stalls at round-off just above the tolerance (e.g. the rows of a
                 # species consumed to ~1e-70 kg/s): the solution is as converged as the
