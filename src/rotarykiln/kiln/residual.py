@@ -216,6 +216,10 @@ class KilnResidual:
             if self.depth is not None:
                 self.i_depth = self.nv
                 self.nv += 1
+        #: which unknowns act on their own cell's rows only (the wall's radial temperatures):
+        #: one colour of the finite-difference Jacobian each, instead of three
+        self.local = np.zeros(self.nv, dtype=bool)
+        self.local[2 : self.i_species] = self.wall.local
         #: whether the kiln has reactions (without, the residual has no sources to evaluate)
         self.reacting = bool(mech.reactions)
         #: the inputs at the ends of the kiln's own inputs (the steady solve's)

@@ -103,3 +103,33 @@ def test_failed_solve_still_raises():
 def test_rate_law_order_in_the_flow_of_its_basis(law, params, order):
     p = dict(RATE_LAWS[law].defaults, **params)
     assert RATE_LAWS[law].flow_order(p) == order
+
+
+@pytest.mark.parametrize("name", ["barr_T4", "rotary_pyrolysis", "limestone_calcination"])
+def test_local_unknowns_are_those_the_probe_finds_and_give_the_same_jacobian(name):
+    """The wall's radial temperatures act on their own cell only (a jacket's gas does not):
+    the residual's ``local`` flags are what the finite-difference probe finds at the solution,
+    and the Jacobian with one colour per local unknown is the full colouring's (bit for bit
+    but for the round-off of the rates' matrix products, whose blocking follows the number of
+    states evaluated together)."""
+    import warnings
+
+    from rotarykiln.case import load_case
+    from rotarykiln.cases import builtin_case_path
+    from rotarykiln.kiln.from_case import kiln_from_case
+    from rotarykiln.kiln.residual import KilnResidual
+    from rotarykiln.kiln.steady.batch import BatchResidual, local_unknowns
+    from rotarykiln.kiln.steady.newton import _banded_jacobian
+    from rotarykiln.kiln.steady.solve import solve_kiln
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kiln, cells = kiln_from_case(load_case(builtin_case_path(name)))
+        x = solve_kiln(kiln, cells).fluxes["x"]
+    res = KilnResidual(kiln, cells)
+    assert res.local.tolist() == local_unknowns(BatchResidual([res]), x).tolist()
+    assert res.local.any()
+    R = res.evaluate(x)
+    full, _ = _banded_jacobian(res.evaluate, x, R)
+    fewer, _ = _banded_jacobian(res.evaluate, x, R, local=res.local)
+    np.testing.assert_allclose(fewer, full, rtol=0, atol=1e-11 * np.abs(full).max())

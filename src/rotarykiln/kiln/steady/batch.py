@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import copy
 import dataclasses
-import functools
 import logging
 import math
 import warnings
@@ -42,7 +41,7 @@ from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import BoundaryInputs
 from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.results.solution import KilnSolution
-from rotarykiln.kiln.steady.newton import SQUARED_FLOOR, STAGNATION_FACTOR
+from rotarykiln.kiln.steady.newton import SQUARED_FLOOR, STAGNATION_FACTOR, coloured_pattern
 from rotarykiln.kiln.steady.solve import finish_solution, newton_options, solve_kiln
 
 log = logging.getLogger(__name__)
@@ -361,39 +360,6 @@ class BatchResidual:
         return R * self.row_factor[cases][:, None, None, :]
 
 
-@functools.lru_cache(maxsize=16)
-def _pattern(n: int, nv: int, local: tuple[bool, ...]):
-    """Colouring of the banded Jacobian of ``n`` cells of ``nv`` unknowns when the unknowns
-    ``local`` act on their own cell's rows only: 3 colours (cells ``j mod 3``) per other
-    unknown, one (every cell) per local one.
-
-    Returns ``colours``, ``perturbed`` (flat indices into the perturbed unknowns ``(colours,
-    n, nv)``, one per unknown ``(j, v)``), and for every band entry its place in the
-    flattened differences ``dR[colour, r, w]`` (``src``), in the flattened banded matrix
-    (``dst``, the layout of :func:`scipy.linalg.solve_banded` with half-bandwidth ``2 nv -
-    1``) and in the flattened steps ``h[j, v]`` (``step``).
-    """
-    local = np.asarray(local, dtype=bool)
-    first = np.cumsum([0] + [1 if loc else 3 for loc in local])[:-1]  # first colour of v
-    colours = int(sum(1 if loc else 3 for loc in local))
-    cells, var = np.arange(n), np.arange(nv)
-    colour = np.where(local[None, :], first[None, :], first[None, :] + cells[:, None] % 3)
-    perturbed = ((colour * n + cells[:, None]) * nv + var[None, :]).ravel()
-    size, bw = n * nv, 2 * nv - 1
-    src, dst, step = [], [], []
-    for off in (-1, 0, 1):
-        j = cells[max(0, -off) : n - max(0, off)][:, None, None]
-        for v in range(nv):
-            if off and local[v]:
-                continue  # a local unknown: no entry outside its own cell's rows
-            w = var[None, None, :]
-            c = colour[j[:, 0, 0], v][:, None, None]
-            src.append((((c * n) + (j + off)) * nv + w).ravel())
-            dst.append(((bw + off * nv + w - v) * size + (j * nv + v)).ravel())
-            step.append(np.broadcast_to(j * nv + v, (j.shape[0], 1, nv)).ravel())
-    return colours, perturbed, np.concatenate(src), np.concatenate(dst), np.concatenate(step)
-
-
 def local_unknowns(F, x: np.ndarray, case: int = 0, rel_step: float = 1e-7) -> np.ndarray:
     """Which unknowns of a batched residual ``F`` act on their own cell's rows only (bool,
     nv): those whose coloured finite differences (3 colours, cells ``j mod 3``) leave every
@@ -401,7 +367,7 @@ def local_unknowns(F, x: np.ndarray, case: int = 0, rel_step: float = 1e-7) -> n
     ``case`` (a wall temperature: its cell's exchange and conduction only)."""
     n, nv = x.shape
     none = tuple([False] * nv)
-    colours, perturbed, *_ = _pattern(n, nv, none)
+    colours, perturbed, *_ = coloured_pattern(n, nv, none)
     h = rel_step * np.maximum(np.abs(x), 1.0)
     X = np.broadcast_to(x, (colours, n, nv)).copy()
     X.ravel()[perturbed] = (x + h).ravel()
@@ -419,10 +385,10 @@ def jacobian_factors(F, x, cases, R, *, local=None, step_floor=1.0, rel_step=1e-
     Jacobians of the cases ``cases`` of a batched residual ``F`` at ``x`` (b, n, nv), their
     residuals ``R`` (b, n, nv), all colours of all cases in one residual call: steps
     ``rel_step max(|x|, step_floor)``, the unknowns ``local`` one colour each
-    (:func:`_pattern`)."""
+    (:func:`~rotarykiln.kiln.steady.newton.coloured_pattern`)."""
     b, n, nv = x.shape
     loc = tuple(bool(v) for v in (np.zeros(nv, bool) if local is None else local))
-    colours, perturbed, src, dst, step_idx = _pattern(n, nv, loc)
+    colours, perturbed, src, dst, step_idx = coloured_pattern(n, nv, loc)
     floor = np.broadcast_to(np.asarray(step_floor, dtype=float), (nv,))
     h = rel_step * np.maximum(np.abs(x), floor)
     X = np.broadcast_to(x[:, None], (b, colours, n, nv)).copy()
@@ -791,7 +757,6 @@ def solve_batch(
     caught: list[list] = [[] for _ in residuals]
     opts = dict(tol=tol, max_iter=max_iter, check_balances=check_balances)
     solved: list[int] = []
-    opts["local"] = {}  # the local unknowns of each layout, found once
     for group in groups:
         size = batch_size_for(residuals[group[0]], batch)
         _solve_group(residuals, group, size, out, caught, opts, solved)
@@ -850,11 +815,7 @@ def _from_neighbour(residuals, i, solved, out, caught, opts):
     start = _unknowns(res, _physical(residuals[near[j]], out[near[j]].fluxes["x"]))
     F = BatchResidual([res])
     kw = newton_options(res, tol=opts["tol"], max_iter=opts["max_iter"])
-    layout = _layout(res)
-    if layout not in opts["local"]:  # found once per layout, on the neighbour's solution
-        neighbour = residuals[near[j]]
-        opts["local"][layout] = local_unknowns(BatchResidual([neighbour]), out[near[j]].fluxes["x"])
-    x, its, _, ok = newton_batch(F, start[None], F.q_ref, local=opts["local"][layout], **kw)
+    x, its, _, ok = newton_batch(F, start[None], F.q_ref, **kw)
     if not ok[0]:
         return None
     evaluated = F.full(x, np.array([0]))[0]
@@ -889,7 +850,7 @@ def _seeds(chunk: list, key: dict, known: list) -> list:
     return picked
 
 
-def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, local, solved):
+def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
     """Solve the cases ``chunk`` of one structure together, each from the nearest case with
     kept LU factors (``lu``: case -> factors; its solution the start, its Jacobian the
     first); a case that fails there is solved alone. The solved cases are appended to
@@ -913,7 +874,6 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, local, solved):
         F,
         np.stack(starts),
         F.q_ref,
-        local=local,
         start_factors=start_factors,
         factors_out=factors,
         broyden=BROYDEN_UPDATES,
@@ -974,13 +934,9 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     anchor = BatchResidual([residuals[first]])
     x_first = out[first].fluxes["x"][None]
     kw0 = newton_options(residuals[first], tol=opts["tol"], max_iter=opts["max_iter"])
-    layout = _layout(residuals[first])
-    if layout not in opts["local"]:
-        opts["local"][layout] = local_unknowns(anchor, x_first[0])
-    local = opts["local"][layout]
     R_first = anchor(x_first[:, None], np.array([0]))[:, 0]
     start_lu = jacobian_factors(
-        anchor, x_first, np.array([0]), R_first, local=local, step_floor=kw0["step_floor"]
+        anchor, x_first, np.array([0]), R_first, local=kw0["local"], step_floor=kw0["step_floor"]
     )[0]
     key = {i: _scaled_inputs(residuals[i]) for i in group}
     lu = {first: start_lu}  # the LU factors kept: the first case's and each chunk's seeds'
@@ -989,6 +945,6 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
         seeds = _seeds(chunk, key, [key[j] for j in lu])
         for part in (seeds, [i for i in chunk if i not in set(seeds)]):
             if part:
-                _solve_chunk(residuals, part, key, lu, out, caught, opts, local, solved)
+                _solve_chunk(residuals, part, key, lu, out, caught, opts, solved)
     if isinstance(solved_before, list):
         solved_before.extend(solved)

@@ -22,7 +22,13 @@ from rotarykiln.errors import ConvergenceError
 
 log = logging.getLogger(__name__)
 
-__all__ = ["NewtonReport", "band_entries", "colour_batch", "newton_banded"]
+__all__ = [
+    "NewtonReport",
+    "band_entries",
+    "colour_batch",
+    "coloured_pattern",
+    "newton_banded",
+]
 
 #: A Newton iteration whose line search cannot reduce a residual already within this factor of
 #: the tolerance has reached round-off: it is accepted as converged.
@@ -94,17 +100,57 @@ def band_entries(n: int, nv: int):
     return src, rows, cols, step
 
 
-def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0, central=False):
+@lru_cache(maxsize=16)
+def coloured_pattern(n: int, nv: int, local: tuple[bool, ...]):
+    """Colouring of the banded Jacobian of ``n`` cells of ``nv`` unknowns when the unknowns
+    ``local`` act on their own cell's rows only: 3 colours (cells ``j mod 3``) per other
+    unknown, one (every cell) per local one.
+
+    Returns ``colours``, ``perturbed`` (flat indices into the perturbed unknowns ``(colours,
+    n, nv)``, one per unknown ``(j, v)``), and for every band entry its place in the
+    flattened differences ``dR[colour, r, w]`` (``src``), in the flattened banded matrix
+    (``dst``, the layout of :func:`scipy.linalg.solve_banded` with half-bandwidth ``2 nv -
+    1``) and in the flattened steps ``h[j, v]`` (``step``).
+    """
+    local = np.asarray(local, dtype=bool)
+    first = np.cumsum([0] + [1 if loc else 3 for loc in local])[:-1]  # first colour of v
+    colours = int(sum(1 if loc else 3 for loc in local))
+    cells, var = np.arange(n), np.arange(nv)
+    colour = np.where(local[None, :], first[None, :], first[None, :] + cells[:, None] % 3)
+    perturbed = ((colour * n + cells[:, None]) * nv + var[None, :]).ravel()
+    size, bw = n * nv, 2 * nv - 1
+    src, dst, step = [], [], []
+    for off in (-1, 0, 1):
+        j = cells[max(0, -off) : n - max(0, off)][:, None, None]
+        for v in range(nv):
+            if off and local[v]:
+                continue  # a local unknown: no entry outside its own cell's rows
+            w = var[None, None, :]
+            c = colour[j[:, 0, 0], v][:, None, None]
+            src.append((((c * n) + (j + off)) * nv + w).ravel())
+            dst.append(((bw + off * nv + w - v) * size + (j * nv + v)).ravel())
+            step.append(np.broadcast_to(j * nv + v, (j.shape[0], 1, nv)).ravel())
+    return colours, perturbed, np.concatenate(src), np.concatenate(dst), np.concatenate(step)
+
+
+def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0, central=False, local=None):
     """The banded Jacobian of ``F`` at ``x`` by coloured forward differences, or central ones
-    (``central``: second-order accurate, twice the residual work)."""
+    (``central``: second-order accurate, twice the residual work); the unknowns ``local``
+    (bool per variable, :func:`coloured_pattern`) one colour each: the same entries."""
     n, nv = x.shape
     h = rel_step * np.maximum(np.abs(x), step_floor)
-    _, src, dst, step = _jacobian_pattern(n, nv)
-    X = colour_batch(x, h)
+    loc = tuple(bool(v) for v in (np.zeros(nv, bool) if local is None else local))
+    colours, perturbed, src, dst, step = coloured_pattern(n, nv, loc)
+
+    def shifted(sign):
+        X = np.broadcast_to(x, (colours, n, nv)).copy()
+        X.ravel()[perturbed] = (x + sign * h).ravel()
+        return X
+
     if central:
-        dR = 0.5 * (F(X) - F(colour_batch(x, -h)))
+        dR = 0.5 * (F(shifted(1.0)) - F(shifted(-1.0)))
     else:
-        dR = F(X) - R0  # [c, v, row cell, equation]
+        dR = F(shifted(1.0)) - R0  # [colour, row cell, equation]
     bw = 2 * nv - 1
     ab = np.zeros((2 * bw + 1, n * nv))
     ab.ravel()[dst] = dR.ravel()[src] / h.ravel()[step]
@@ -125,6 +171,7 @@ def newton_banded(
     step_floor=1.0,
     squared=None,
     stall=None,
+    local=None,
 ):
     """Solve ``F(x) = 0`` for ``x`` of shape ``(n, nv)``.
 
@@ -160,6 +207,10 @@ def newton_banded(
         ``(k, f)``: give up after ``k`` iterations if the residual is not below ``f`` times
         where it started (a continuation step too long for Newton then costs ``k`` iterations,
         not ``max_iter``; one that converges slowly still may).
+    local : array of bool (nv,), optional
+        Variables acting on their own cell's rows only (a wall's radial temperatures): one
+        colour of the Jacobian each instead of three (the same Jacobian, fewer residual
+        evaluations; :func:`coloured_pattern`).
 
     Returns
     -------
@@ -209,7 +260,7 @@ def newton_banded(
             return x, NewtonReport(it - 1, norm, tuple(history), n_jac)
         if not np.isfinite(norm):
             break
-        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor, central=central)
+        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor, central=central, local=local)
         n_jac += 1
         try:
             dx = solve_banded((bw, bw), ab, -R.ravel(), check_finite=False).reshape(n, nv)

@@ -176,7 +176,8 @@ def _every_root_squared(res: KilnResidual, squared: np.ndarray) -> dict | None:
 def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
     """The keyword options of :func:`~rotarykiln.kiln.steady.newton.newton_banded` for the
     residual ``res``: tolerance, iterations, which unknowns are temperatures, where each
-    unknown lies (for errors), the finite-difference step floors and the squared unknowns."""
+    unknown lies (for errors), the finite-difference step floors, the squared unknowns and
+    the local ones (one colour of the Jacobian each)."""
     kiln, i0 = res.kiln, res.i_species
     species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
     if res.depth is not None:
@@ -192,6 +193,7 @@ def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
         where=where,
         step_floor=floor,
         squared=squared,
+        local=res.local,
     )
 
 

@@ -173,6 +173,9 @@ class JacketWall:
     outer_diameter: float
 
     n_temperatures = 2
+    #: which wall temperatures act on their own cell's balances only (the inner wall; the
+    #: jacket gas flows along the drum)
+    local = (True, False)
     #: conductance (W/(m2 K)) of the row holding the wall at the jacket temperature
     TIE = 100.0
 

@@ -167,6 +167,12 @@ class LinedWall:
         """Temperatures per cell: inner surface, each interface, shell."""
         return len(self.layers) + 1
 
+    @property
+    def local(self) -> tuple[bool, ...]:
+        """Which wall temperatures act on their own cell's balances only: all (the lining
+        conducts radially)."""
+        return (True,) * self.n_temperatures
+
     def labels(self) -> list[str]:
         """Name of each wall balance (inner wall, lining interface k, shell)."""
         n = len(self.layers)
@@ -281,6 +287,8 @@ class ConstantUWall:
     ambient_temperature: float
 
     n_temperatures = 1
+    #: the inner wall acts on its own cell's balances only
+    local = (True,)
 
     def labels(self) -> list[str]:
         """Name of the wall balance (the inner wall)."""
