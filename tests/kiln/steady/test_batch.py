@@ -278,6 +278,24 @@ def test_a_batch_warns_each_case_of_what_its_own_solve_warns():
     assert warned == [False, True, False, True, False, True]
 
 
+def test_a_batch_warns_each_case_of_a_property_every_case_has():
+    """Barr's 2.5 mm sand lies outside Li et al.'s particle sizes: a warning of one value,
+    checked once for the batch and given to every case (with the gas Reynolds numbers each
+    case warns of on its own), as each case's own solve warns."""
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
+    kilns = [kiln, *operating_points(kiln, 4, seed=11)]
+    caught: list = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        solve_batch(kilns, cells, warnings_out=caught)
+    for k, ws in zip(kilns, caught, strict=True):
+        with warnings.catch_warnings(record=True) as alone:
+            warnings.simplefilter("always")
+            solve_kiln(k, cells)
+        assert sorted({str(w.message) for w in ws}) == sorted({str(w.message) for w in alone})
+        assert any("Li et al." in str(w.message) for w in ws)
+
+
 def test_broyden_updates_keep_the_secant_equation_and_reach_the_same_root():
     """Each update makes the inverse map the last residual change onto the last step
     (H y = s), and Newton on a kept Jacobian with the updates lands where Newton with its own

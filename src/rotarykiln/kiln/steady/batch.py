@@ -35,7 +35,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 from scipy.linalg import lapack
 
-from rotarykiln.errors import ConvergenceError, InputError
+from rotarykiln.errors import ConvergenceError, InputError, OutOfRangeWarning
 from rotarykiln.kiln.gas_mixture import CaseMixtures
 from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import BoundaryInputs
@@ -301,12 +301,13 @@ class BatchResidual:
         res.mixture = self.mixtures.take(cases)
         return res
 
-    def full(self, x, cases, flags: list | None = None) -> list:
+    def full(self, x, cases, flags: list | None = None, shared: list | None = None) -> list:
         """Per case of ``cases``, what ``KilnResidual.evaluate(x[None], full=True)`` of its
         own residual gives at its unknowns ``x`` (b, n, nv): all evaluated in one call.
 
-        ``flags``: filled with one bool per case, whether the closures' validity ranges may
-        warn for it (:meth:`closures_may_warn`)."""
+        ``flags`` and ``shared``: filled with one bool per case, whether the closures'
+        validity ranges may warn for it, and with the warnings every case has
+        (:meth:`closures_may_warn`)."""
         xf = self.x_factor[cases][:, None, :]
         inputs = self.inputs.take(cases)
         xs = (x * xf)[:, None]
@@ -314,21 +315,25 @@ class BatchResidual:
         R = R * self.row_factor[cases][:, None, None, :]
         n = self.base.n
         if flags is not None:
-            flags[:] = self.closures_may_warn(xs, fl, faces[3], inputs, cases)
+            flags[:], found = self.closures_may_warn(xs, fl, faces[3], inputs, cases)
+            if shared is not None:
+                shared[:] = found
         out = []
         for b in range(len(cases)):
             flux = {k: np.broadcast_to(v, R.shape[:2] + (n,))[b] for k, v in fl.items()}
             out.append((R[b], flux, prod[b], rate[b], tuple(f[b] for f in faces)))
         return out
 
-    def closures_may_warn(self, xs, fl, qg, inputs, cases) -> np.ndarray:
-        """Whether each case's closures may be outside their validated ranges (bool per case):
-        the ranges checked once for all the cases (their unknowns ``xs`` (b, 1, n, nv), cell
-        fluxes ``fl``, face gas flows ``qg``, inputs ``inputs``; their indices ``cases``),
-        each warning's mask of the
-        values outside telling its cases (a warning without a mask per case: every case). A
-        case not flagged would warn of nothing checked alone; a flagged one is checked alone,
-        for its own warnings."""
+    def closures_may_warn(self, xs, fl, qg, inputs, cases) -> tuple[np.ndarray, list]:
+        """Whether each case's closures may be outside their validated ranges (bool per case),
+        and the warnings every case has: the ranges checked once for all the cases (their
+        unknowns ``xs`` (b, 1, n, nv), cell fluxes ``fl``, face gas flows ``qg``, inputs
+        ``inputs``; their indices ``cases``). A warning of values with a leading case axis
+        names its cases by its mask of the values outside; one of a single value (a property
+        of the kiln's structure, the same in every case: a particle size outside a fit) is
+        every case's, the same warning; any other flags every case. A case not flagged would
+        warn, checked alone, of the shared warnings only; a flagged one is checked alone, for
+        its own warnings."""
         b = xs.shape[0]
         g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
         base = self._of(cases)
@@ -344,13 +349,19 @@ class BatchResidual:
                 omega=inputs.omega,
             )
         flags = np.zeros(b, dtype=bool)
+        shared = []
         for w in caught:
-            mask = getattr(w.message, "mask", None)
-            if mask is not None and np.ndim(mask) >= 2 and np.shape(mask)[0] == b:
+            if not isinstance(w.message, OutOfRangeWarning):
+                flags[:] = True
+                continue
+            mask = w.message.mask
+            if mask is None:
+                shared.append(w)
+            elif np.ndim(mask) >= 2 and np.shape(mask)[0] == b:
                 flags |= np.asarray(mask).reshape(b, -1).any(1)
             else:
                 flags[:] = True
-        return flags
+        return flags, shared
 
     def __call__(self, x, cases) -> np.ndarray:
         """Residual of the cases ``cases`` (index array) at their unknowns ``x`` (b, C, n,
@@ -881,7 +892,10 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
     )
     done = np.flatnonzero(ok)
     flags: list = []
-    evaluated = dict(zip(done, F.full(x[done], done, flags), strict=True)) if done.size else {}
+    shared: list = []
+    evaluated = (
+        dict(zip(done, F.full(x[done], done, flags, shared), strict=True)) if done.size else {}
+    )
     check = dict(zip(done, flags, strict=True))
     keep = len(chunk) <= max(1, len(residuals) // 10)
     for b, i in enumerate(chunk):
@@ -900,6 +914,8 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
                     )
                 ),
             )
+            if not check[b]:  # its closures' warnings are those every case of the chunk has
+                caught[i].extend(shared)
         if not ok[b] or isinstance(out[i], ConvergenceError):
             caught[i].clear()
             out[i] = _alone(residuals[i], caught[i], opts)
