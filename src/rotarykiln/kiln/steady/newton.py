@@ -22,7 +22,7 @@ from rotarykiln.errors import ConvergenceError
 
 log = logging.getLogger(__name__)
 
-__all__ = ["NewtonReport", "band_entries", "colour_batch", "newton_banded"]
+__all__ = ["NewtonReport", "band_entries", "colour_batch", "newton_banded", "trial_point"]
 
 #: A Newton iteration whose line search cannot reduce a residual already within this factor of
 #: the tolerance has reached round-off: it is accepted as converged.
@@ -30,6 +30,9 @@ STAGNATION_FACTOR = 10.0
 #: A squared unknown (x = sqrt(q)) steps as q, by Newton in q, and keeps at least this
 #: fraction of its q when that step would cross zero.
 SQUARED_FLOOR = 1e-3
+#: A logged unknown's decrease is taken in its logarithm, x exp(dx/x), with dx/x not below
+#: this (exp(-600) ~ 1e-261: far below any flow a kiln carries, and no underflow).
+LOG_STEP_FLOOR = -600.0
 
 
 @dataclass(frozen=True)
@@ -106,6 +109,31 @@ def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
     return ab, bw
 
 
+def trial_point(x, dx, lam, sq, lg):
+    """The trial point ``x + lam dx`` of a Newton step, the squared unknowns ``sq`` stepped in
+    their square (kept above ``SQUARED_FLOOR`` of it) and the logged ones ``lg`` lowered in
+    their logarithm (``newton_banded``); ``sq``, ``lg``: column indices or None.
+
+    Examples
+    --------
+    >>> x = np.array([[2.0, 1e-3]])
+    >>> trial_point(x, np.array([[-4.0, -2e-3]]), 1.0, None, np.array([1])).round(8).tolist()
+    [[-2.0, 0.00013534]]
+    """
+    xt = x + lam * dx
+    if sq is not None:
+        s = x[:, sq]
+        q = np.maximum(s * s + lam * 2.0 * s * dx[:, sq], SQUARED_FLOOR * s * s)
+        xt[:, sq] = np.copysign(np.sqrt(q), s)
+    if lg is not None:
+        s = x[:, lg]
+        safe = np.where(s != 0.0, s, 1.0)
+        r = np.where(s != 0.0, lam * dx[:, lg] / safe, 0.0)
+        down = s * np.exp(np.maximum(r, LOG_STEP_FLOOR))
+        xt[:, lg] = np.where(r < 0.0, down, xt[:, lg])
+    return xt
+
+
 def newton_banded(
     F,
     x0,
@@ -120,6 +148,7 @@ def newton_banded(
     step_floor=1.0,
     squared=None,
     stall=None,
+    logged=None,
 ):
     """Solve ``F(x) = 0`` for ``x`` of shape ``(n, nv)``.
 
@@ -155,6 +184,14 @@ def newton_banded(
         ``(k, f)``: give up after ``k`` iterations if the residual is not below ``f`` times
         where it started (a continuation step too long for Newton then costs ``k`` iterations,
         not ``max_iter``; one that converges slowly still may).
+    logged : array of bool (nv,), optional
+        Variables that are positive and may fall by orders of magnitude within a cell (a
+        reactant's root flow across the end of its reaction front): a step that lowers one
+        is taken in its logarithm, ``x exp(dx / x)`` (the same linear solve; an increase
+        stays ``x + dx``), so it never crosses zero and can fall by decades in one step where
+        Newton's straight step would overshoot through zero. The line search tries these
+        steps first and, if none of them lowers the residual, the straight ones
+        (:func:`trial_point`).
 
     Returns
     -------
@@ -190,6 +227,7 @@ def newton_banded(
     n, nv = x.shape
     nt = nv if temperature_vars is None else temperature_vars
     sq = None if squared is None or not np.any(squared) else np.flatnonzero(squared)
+    lg = None if logged is None or not np.any(logged) else np.flatnonzero(logged)
     R = F(x)
     norm = float(np.max(np.abs(R))) / scale
     history = [norm]
@@ -212,19 +250,20 @@ def newton_banded(
         big = np.max(np.abs(dx[:, :nt])) if nt else 0.0
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         accepted = False
-        for _ in range(30):
-            xt = x + lam * dx
-            if sq is not None:
-                s = x[:, sq]
-                q = np.maximum(s * s + lam * 2.0 * s * dx[:, sq], SQUARED_FLOOR * s * s)
-                xt[:, sq] = np.copysign(np.sqrt(q), s)
-            xt[:, :nt] = np.maximum(xt[:, :nt], lower)
-            Rt = F(xt)
-            nt_norm = float(np.max(np.abs(Rt))) / scale
-            if np.isfinite(nt_norm) and (nt_norm < (1 - 1e-4 * lam) * norm or nt_norm <= tol):
-                accepted = True
+        lam0 = lam
+        for logs in (lg, None) if lg is not None else (None,):
+            lam = lam0
+            for _ in range(30):
+                xt = trial_point(x, dx, lam, sq, logs)
+                xt[:, :nt] = np.maximum(xt[:, :nt], lower)
+                Rt = F(xt)
+                nt_norm = float(np.max(np.abs(Rt))) / scale
+                if np.isfinite(nt_norm) and (nt_norm < (1 - 1e-4 * lam) * norm or nt_norm <= tol):
+                    accepted = True
+                    break
+                lam *= 0.5
+            if accepted:
                 break
-            lam *= 0.5
         if not accepted:
             if norm <= STAGNATION_FACTOR * tol:
                 # Newton stalls at round-off just above the tolerance (e.g. the rows of a
