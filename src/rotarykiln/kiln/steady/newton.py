@@ -112,13 +112,36 @@ def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0):
 def trial_point(x, dx, lam, sq, lg):
     """The trial point ``x + lam dx`` of a Newton step, the squared unknowns ``sq`` stepped in
     their square (kept above ``SQUARED_FLOOR`` of it) and the logged ones ``lg`` lowered in
-    their logarithm (``newton_banded``); ``sq``, ``lg``: column indices or None.
+    their logarithm (:func:`newton_banded`).
+
+    Parameters
+    ----------
+    x : array (n, nv)
+        Unknowns (K for temperatures, - for scaled flows).
+    dx : array (n, nv)
+        Newton step (K, -).
+    lam : float
+        Step length, - (1: the full step).
+    sq : array of int or None
+        Columns stepped in their square (-).
+    lg : array of int or None
+        Columns lowered in their logarithm, ``x exp(lam dx / x)`` where ``dx / x < 0`` (-).
+
+    Returns
+    -------
+    array (n, nv)
+        The trial unknowns (K, -).
 
     Examples
     --------
     >>> x = np.array([[2.0, 1e-3]])
     >>> trial_point(x, np.array([[-4.0, -2e-3]]), 1.0, None, np.array([1])).round(8).tolist()
     [[-2.0, 0.00013534]]
+
+    References
+    ----------
+    P. Deuflhard, Newton Methods for Nonlinear Problems, Springer (2004), sec. 3.2 (damped
+    Newton steps in transformed variables).
     """
     xt = x + lam * dx
     if sq is not None:
