@@ -22,6 +22,18 @@ gas by 1.6e-6 K against the stored profiles, within it. Each case's tolerance is
 measured resolution (two builds' iterates on either side of the root), rounded up to 1, 2 or
 5 x 10^k, and never below 1e-6 K; a case without an entry is held to 1e-6 K. Round-off itself
 (the residual perturbed by 2.2e-16 |J| |x|, row by row) moves them by at most 2e-8 K.
+The other columns (flows, heat fluxes) move with the temperatures: they are held relatively,
+to their largest value times the case's temperature tolerance over ``T_SCALE`` (200 K: a heat
+flux follows a temperature difference, a few hundred K at the stiff kilns' fronts, and moves
+relatively by the temperatures' shift over it), and never below ``RELATIVE_TOL``; on numpy
+2.4.6 the lime kiln's CaCO3 and ash flows moved by 1.3e-9 and 1.9e-9 of their largest values,
+its gas-wall convection by 1.3e-8. A reaction rate (``rate_*``) moves more: the lime kiln's bed
+calcines 0.1-0.4 K above its equilibrium temperature, where the driving force's slope
+d ln r/dT is about 10 /K (``RATE_SENSITIVITY``); its columns are held to their largest value
+times the temperature tolerance times that slope. The Newton iterations of a summary are the
+solver's path, not its solution (numpy 2.4.6 took the cement kiln's fine grid through its retry:
+47 iterations, 23 before), and so is its last residual (below the tolerance): neither is
+compared.
 """
 
 from __future__ import annotations
@@ -62,6 +74,8 @@ TEMPERATURE_TOL = {
     "ubc_pilot_flame": 2e-6,  # 6.84e-7 K
 }
 RELATIVE_TOL = 1e-9
+RATE_SENSITIVITY = 10.0  # 1/K: d ln r/dT of calcination 0.1 K above its equilibrium
+T_SCALE = 200.0  # K: a profile column's relative tolerance is its case's TEMPERATURE_TOL / T_SCALE
 CLOSURE_TOL = 1e-8  # W, or relative: the round-off of a balance (1e-6 is its bound)
 CLOSURE_TOL_W = 1e-10  # a closure in W, over the kiln's largest heat flow (W)
 GENERATED_SUMMARIES = GOLDEN / "generated_cases_summary.json"
@@ -109,9 +123,15 @@ def test_builtin_case_gives_its_golden_outputs(name, tmp_path, monkeypatch):
             np.testing.assert_allclose(a, b, rtol=0, atol=tol, err_msg=col)
         else:
             scale = max(float(np.nanmax(np.abs(b))) if b.size else 0.0, 1e-300)
-            np.testing.assert_allclose(a, b, rtol=0, atol=RELATIVE_TOL * scale, err_msg=col)
+            t_tol = TEMPERATURE_TOL.get(name, DEFAULT_T_TOL)
+            rel = max(RELATIVE_TOL, t_tol / T_SCALE)
+            if col.startswith("rate_"):
+                rel = max(rel, t_tol * RATE_SENSITIVITY)
+            np.testing.assert_allclose(a, b, rtol=0, atol=rel * scale, err_msg=col)
     _assert_summary(
-        json.loads(js.read_text()), json.loads((GOLDEN / f"{stem}_summary.json").read_text())
+        json.loads(js.read_text()),
+        json.loads((GOLDEN / f"{stem}_summary.json").read_text()),
+        TEMPERATURE_TOL.get(name, DEFAULT_T_TOL),
     )
 
 
@@ -133,7 +153,8 @@ def test_generated_case_gives_its_golden_summary(name, tmp_path, monkeypatch):
     _assert_summary(got, held[name])
 
 
-def _assert_summary(got_s: dict, want_s: dict) -> None:
+def _assert_summary(got_s: dict, want_s: dict, t_tol: float = 0.0) -> None:
+    # a temperature of the summary (``*_K``) is held as the profiles', to t_tol (K) at least
     assert set(got_s) == set(want_s)
     # a closure in W is round-off of the kiln's heat flows: judged against the largest
     heat = max(
@@ -142,6 +163,8 @@ def _assert_summary(got_s: dict, want_s: dict) -> None:
     )
     for key, w in want_s.items():
         g = got_s[key]
+        if key.endswith(("newton_iterations", "kiln_residual")):
+            continue  # the solver's path, not its solution (module docstring)
         if isinstance(w, int | float) and not isinstance(w, bool) and w is not None:
             if "closure" in key:
                 # a balance's closure is round-off (its bound is checked by every solve):
@@ -149,7 +172,8 @@ def _assert_summary(got_s: dict, want_s: dict) -> None:
                 tol = max(CLOSURE_TOL, CLOSURE_TOL_W * heat) if key.endswith("_W") else CLOSURE_TOL
                 assert abs(g - w) <= tol, key
             elif math.isfinite(w):
-                assert g == pytest.approx(w, rel=RELATIVE_TOL, abs=1e-12), key
+                tol = max(t_tol, 1e-12) if key.endswith("_K") else 1e-12
+                assert g == pytest.approx(w, rel=RELATIVE_TOL, abs=tol), key
         elif not key.endswith(("_csv", "_png", "_json")):
             assert g == w, key
 

@@ -395,7 +395,7 @@ def test_the_lime_kiln_solves_with_less_feed_or_more_coal(overrides, monkeypatch
     assert abs(sol.energy_closure) < 1e-6
     assert max(sol.element_closure.values()) < 1e-8
     assert sol.bed_flows["CaCO3"][-1] < 1e-6 * kiln.feed.flows["CaCO3"]
-    assert sol.residual <= 1e-11
+    assert sol.residual <= 10 * 1e-11  # the tolerance, or its stagnation at round-off
 
 
 def test_a_reacting_kiln_whose_solve_fails_is_solved_from_a_larger_feed(monkeypatch):
