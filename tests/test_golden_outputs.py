@@ -10,6 +10,30 @@ held, all in one file (``generated_cases_summary.json``), and their profiles are
 is meant to change the physics regenerates them, in a commit of its own that names the cause::
 
     ROTARYKILN_WRITE_GOLDEN=1 python -m pytest tests/test_golden_outputs.py
+
+The temperatures are held to what the solver itself determines, per case (``TEMPERATURE_TOL``):
+Newton stops once ``max|R| <= 1e-11 Q_ref``, and an iterate accepted there may lie as far from
+the root as ``J^-1 r`` for a residual ``r`` of that size. Measured at each case's converged
+state (``docs/scripts/golden_tolerances.py``: the largest ``|J^-1 r|`` over the temperature
+unknowns for 8 residuals of random signs, each row ``1e-11 Q_ref``), this resolution is
+1.6e-7 K (tscheng_A16) to 7.8e-6 K (lime_kiln) and 1.6e-5 K (cement_kiln), whose fronts are
+stiff; numpy 2.4.6 / scipy 1.17.1 moved the lime kiln's bed by 6.2e-6 K and the cement kiln's
+gas by 1.6e-6 K against the stored profiles, within it. Each case's tolerance is twice its
+measured resolution (two builds' iterates on either side of the root), rounded up to 1, 2 or
+5 x 10^k, and never below 1e-6 K; a case without an entry is held to 1e-6 K. Round-off itself
+(the residual perturbed by 2.2e-16 |J| |x|, row by row) moves them by at most 2e-8 K.
+The other columns (flows, heat fluxes) move with the temperatures: they are held relatively,
+to their largest value times the case's temperature tolerance over ``T_SCALE`` (200 K: a heat
+flux follows a temperature difference, a few hundred K at the stiff kilns' fronts, and moves
+relatively by the temperatures' shift over it), and never below ``RELATIVE_TOL``; on numpy
+2.4.6 the lime kiln's CaCO3 and ash flows moved by 1.3e-9 and 1.9e-9 of their largest values,
+its gas-wall convection by 1.3e-8. A reaction rate (``rate_*``) moves more: the lime kiln's bed
+calcines 0.1-0.4 K above its equilibrium temperature, where the driving force's slope
+d ln r/dT is about 10 /K (``RATE_SENSITIVITY``); its columns are held to their largest value
+times the temperature tolerance times that slope. The Newton iterations of a summary are the
+solver's path, not its solution (numpy 2.4.6 took the cement kiln's fine grid through its retry:
+47 iterations, 23 before), and so is its last residual (below the tolerance): neither is
+compared.
 """
 
 from __future__ import annotations
@@ -30,8 +54,28 @@ from rotarykiln.cli import main
 
 GOLDEN = Path(__file__).with_name("golden")
 WRITE = os.environ.get("ROTARYKILN_WRITE_GOLDEN") == "1"
-TEMPERATURE_TOL = 1e-6  # K
+#: Temperature tolerance of each case's profiles, K (module docstring): twice the measured
+#: resolution of the Newton tolerance in its temperatures, rounded up, at least DEFAULT_T_TOL.
+DEFAULT_T_TOL = 1e-6
+TEMPERATURE_TOL = {
+    "barr_T2": 2e-6,  # resolution 5.97e-7 K
+    "barr_T3": 2e-6,  # 7.67e-7 K
+    "barr_T4": 2e-6,  # 9.71e-7 K
+    "barr_T6": 2e-6,  # 5.47e-7 K
+    "barr_T9": 5e-6,  # 1.21e-6 K
+    "cement_kiln": 5e-5,  # 1.55e-5 K: the clinker reactions' fronts
+    "charcoal_activation": 5e-6,  # 1.14e-6 K
+    "charcoal_activation_kramers": 5e-6,  # 1.11e-6 K
+    "lime_kiln": 2e-5,  # 7.81e-6 K: the end of calcination, 150 K a cell
+    "limestone_calcination": 1e-5,  # 3.90e-6 K
+    "limestone_fired": 5e-6,  # 2.30e-6 K
+    "rotary_pyrolysis": 5e-6,  # 2.39e-6 K
+    "tscheng_A16": 1e-6,  # 1.60e-7 K
+    "ubc_pilot_flame": 2e-6,  # 6.84e-7 K
+}
 RELATIVE_TOL = 1e-9
+RATE_SENSITIVITY = 10.0  # 1/K: d ln r/dT of calcination 0.1 K above its equilibrium
+T_SCALE = 200.0  # K: a profile column's relative tolerance is its case's TEMPERATURE_TOL / T_SCALE
 CLOSURE_TOL = 1e-8  # W, or relative: the round-off of a balance (1e-6 is its bound)
 CLOSURE_TOL_W = 1e-10  # a closure in W, over the kiln's largest heat flow (W)
 GENERATED_SUMMARIES = GOLDEN / "generated_cases_summary.json"
@@ -75,13 +119,26 @@ def test_builtin_case_gives_its_golden_outputs(name, tmp_path, monkeypatch):
     for col in want.columns:
         a, b = got[col].to_numpy(float), want[col].to_numpy(float)
         if col.startswith("T_") and col.endswith("_K"):
-            np.testing.assert_allclose(a, b, rtol=0, atol=TEMPERATURE_TOL, err_msg=col)
+            tol = max(TEMPERATURE_TOL.get(name, DEFAULT_T_TOL), DEFAULT_T_TOL)
+            np.testing.assert_allclose(a, b, rtol=0, atol=tol, err_msg=col)
         else:
             scale = max(float(np.nanmax(np.abs(b))) if b.size else 0.0, 1e-300)
-            np.testing.assert_allclose(a, b, rtol=0, atol=RELATIVE_TOL * scale, err_msg=col)
+            t_tol = TEMPERATURE_TOL.get(name, DEFAULT_T_TOL)
+            rel = max(RELATIVE_TOL, t_tol / T_SCALE)
+            if col.startswith("rate_"):
+                rel = max(rel, t_tol * RATE_SENSITIVITY)
+            np.testing.assert_allclose(a, b, rtol=0, atol=rel * scale, err_msg=col)
     _assert_summary(
-        json.loads(js.read_text()), json.loads((GOLDEN / f"{stem}_summary.json").read_text())
+        json.loads(js.read_text()),
+        json.loads((GOLDEN / f"{stem}_summary.json").read_text()),
+        TEMPERATURE_TOL.get(name, DEFAULT_T_TOL),
     )
+
+
+def test_every_temperature_tolerance_names_a_case_held_here():
+    # a tolerance of a renamed or removed case would hold nothing: its entry goes too
+    assert set(TEMPERATURE_TOL) <= set(_kiln_cases())
+    assert all(t >= DEFAULT_T_TOL for t in TEMPERATURE_TOL.values())
 
 
 @pytest.mark.parametrize("name", _kiln_cases(generated=True))
@@ -96,7 +153,8 @@ def test_generated_case_gives_its_golden_summary(name, tmp_path, monkeypatch):
     _assert_summary(got, held[name])
 
 
-def _assert_summary(got_s: dict, want_s: dict) -> None:
+def _assert_summary(got_s: dict, want_s: dict, t_tol: float = 0.0) -> None:
+    # a temperature of the summary (``*_K``) is held as the profiles', to t_tol (K) at least
     assert set(got_s) == set(want_s)
     # a closure in W is round-off of the kiln's heat flows: judged against the largest
     heat = max(
@@ -105,6 +163,8 @@ def _assert_summary(got_s: dict, want_s: dict) -> None:
     )
     for key, w in want_s.items():
         g = got_s[key]
+        if key.endswith(("newton_iterations", "kiln_residual")):
+            continue  # the solver's path, not its solution (module docstring)
         if isinstance(w, int | float) and not isinstance(w, bool) and w is not None:
             if "closure" in key:
                 # a balance's closure is round-off (its bound is checked by every solve):
@@ -112,7 +172,8 @@ def _assert_summary(got_s: dict, want_s: dict) -> None:
                 tol = max(CLOSURE_TOL, CLOSURE_TOL_W * heat) if key.endswith("_W") else CLOSURE_TOL
                 assert abs(g - w) <= tol, key
             elif math.isfinite(w):
-                assert g == pytest.approx(w, rel=RELATIVE_TOL, abs=1e-12), key
+                tol = max(t_tol, 1e-12) if key.endswith("_K") else 1e-12
+                assert g == pytest.approx(w, rel=RELATIVE_TOL, abs=tol), key
         elif not key.endswith(("_csv", "_png", "_json")):
             assert g == w, key
 

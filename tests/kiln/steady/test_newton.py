@@ -133,3 +133,26 @@ def test_local_unknowns_are_those_the_probe_finds_and_give_the_same_jacobian(nam
     full, _ = _banded_jacobian(res.evaluate, x, R)
     fewer, _ = _banded_jacobian(res.evaluate, x, R, local=res.local)
     np.testing.assert_allclose(fewer, full, rtol=0, atol=1e-11 * np.abs(full).max())
+
+
+def test_logged_unknowns_fall_by_decades_in_a_step_and_never_cross_zero():
+    # a reactant's flow past the end of its front falls by decades per cell: lowered in its
+    # logarithm, Newton reaches 1e-2 .. 1e-18 from 1 in three steps; the straight steps
+    # overshoot through zero (where the residual is not defined) and crawl
+    target = 10.0 ** -np.arange(2, 22, 4)
+
+    def F(x):
+        return (np.log(np.abs(x[..., 0])) - np.log(target))[..., None]
+
+    seen = []
+
+    def G(x):
+        seen.append(float(np.min(x)))
+        return F(x)
+
+    kw = dict(tol=1e-12, temperature_vars=0, step_floor=1e-300, max_iter=30)
+    x, rep = newton_banded(G, np.ones((5, 1)), 1.0, logged=np.array([True]), **kw)
+    np.testing.assert_allclose(x[:, 0], target, rtol=1e-10)
+    assert rep.iterations <= 4 and min(seen) > 0.0
+    with pytest.raises(ConvergenceError):
+        newton_banded(F, np.ones((5, 1)), 1.0, **kw)

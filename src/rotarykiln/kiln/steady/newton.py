@@ -28,6 +28,7 @@ __all__ = [
     "colour_batch",
     "coloured_pattern",
     "newton_banded",
+    "trial_point",
 ]
 
 #: A Newton iteration whose line search cannot reduce a residual already within this factor of
@@ -36,6 +37,9 @@ STAGNATION_FACTOR = 10.0
 #: A squared unknown (x = sqrt(q)) steps as q, by Newton in q, and keeps at least this
 #: fraction of its q when that step would cross zero.
 SQUARED_FLOOR = 1e-3
+#: A logged unknown's decrease is taken in its logarithm, x exp(dx/x), with dx/x not below
+#: this (exp(-600) ~ 1e-261: far below any flow a kiln carries, and no underflow).
+LOG_STEP_FLOOR = -600.0
 
 
 @dataclass(frozen=True)
@@ -133,28 +137,70 @@ def coloured_pattern(n: int, nv: int, local: tuple[bool, ...]):
     return colours, perturbed, np.concatenate(src), np.concatenate(dst), np.concatenate(step)
 
 
-def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0, central=False, local=None):
-    """The banded Jacobian of ``F`` at ``x`` by coloured forward differences, or central ones
-    (``central``: second-order accurate, twice the residual work); the unknowns ``local``
-    (bool per variable, :func:`coloured_pattern`) one colour each: the same entries."""
+def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0, local=None):
+    """The banded Jacobian of ``F`` at ``x`` by coloured forward differences, the unknowns
+    ``local`` (bool per variable, :func:`coloured_pattern`) one colour each: the same
+    entries."""
     n, nv = x.shape
     h = rel_step * np.maximum(np.abs(x), step_floor)
     loc = tuple(bool(v) for v in (np.zeros(nv, bool) if local is None else local))
     colours, perturbed, src, dst, step = coloured_pattern(n, nv, loc)
 
-    def shifted(sign):
-        X = np.broadcast_to(x, (colours, n, nv)).copy()
-        X.ravel()[perturbed] = (x + sign * h).ravel()
-        return X
-
-    if central:
-        dR = 0.5 * (F(shifted(1.0)) - F(shifted(-1.0)))
-    else:
-        dR = F(shifted(1.0)) - R0  # [colour, row cell, equation]
+    X = np.broadcast_to(x, (colours, n, nv)).copy()
+    X.ravel()[perturbed] = (x + h).ravel()
+    dR = F(X) - R0  # [colour, row cell, equation]
     bw = 2 * nv - 1
     ab = np.zeros((2 * bw + 1, n * nv))
     ab.ravel()[dst] = dR.ravel()[src] / h.ravel()[step]
     return ab, bw
+
+
+def trial_point(x, dx, lam, sq, lg):
+    """The trial point ``x + lam dx`` of a Newton step, the squared unknowns ``sq`` stepped in
+    their square (kept above ``SQUARED_FLOOR`` of it) and the logged ones ``lg`` lowered in
+    their logarithm (:func:`newton_banded`).
+
+    Parameters
+    ----------
+    x : array (n, nv)
+        Unknowns (K for temperatures, - for scaled flows).
+    dx : array (n, nv)
+        Newton step (K, -).
+    lam : float
+        Step length, - (1: the full step).
+    sq : array of int or None
+        Columns stepped in their square (-).
+    lg : array of int or None
+        Columns lowered in their logarithm, ``x exp(lam dx / x)`` where ``dx / x < 0`` (-).
+
+    Returns
+    -------
+    array (n, nv)
+        The trial unknowns (K, -).
+
+    Examples
+    --------
+    >>> x = np.array([[2.0, 1e-3]])
+    >>> trial_point(x, np.array([[-4.0, -2e-3]]), 1.0, None, np.array([1])).round(8).tolist()
+    [[-2.0, 0.00013534]]
+
+    References
+    ----------
+    P. Deuflhard, Newton Methods for Nonlinear Problems, Springer (2004), sec. 3.2 (damped
+    Newton steps in transformed variables).
+    """
+    xt = x + lam * dx
+    if sq is not None:
+        s = x[:, sq]
+        q = np.maximum(s * s + lam * 2.0 * s * dx[:, sq], SQUARED_FLOOR * s * s)
+        xt[:, sq] = np.copysign(np.sqrt(q), s)
+    if lg is not None:
+        s = x[:, lg]
+        safe = np.where(s != 0.0, s, 1.0)
+        r = np.where(s != 0.0, lam * dx[:, lg] / safe, 0.0)
+        down = s * np.exp(np.maximum(r, LOG_STEP_FLOOR))
+        xt[:, lg] = np.where(r < 0.0, down, xt[:, lg])
+    return xt
 
 
 def newton_banded(
@@ -172,6 +218,7 @@ def newton_banded(
     squared=None,
     stall=None,
     local=None,
+    logged=None,
 ):
     """Solve ``F(x) = 0`` for ``x`` of shape ``(n, nv)``.
 
@@ -211,6 +258,14 @@ def newton_banded(
         Variables acting on their own cell's rows only (a wall's radial temperatures): one
         colour of the Jacobian each instead of three (the same Jacobian, fewer residual
         evaluations; :func:`coloured_pattern`).
+    logged : array of bool (nv,), optional
+        Variables that are positive and may fall by orders of magnitude within a cell (a
+        reactant's root flow across the end of its reaction front): a step that lowers one
+        is taken in its logarithm, ``x exp(dx / x)`` (the same linear solve; an increase
+        stays ``x + dx``), so it never crosses zero and can fall by decades in one step where
+        Newton's straight step would overshoot through zero. The line search tries these
+        steps first and, if none of them lowers the residual, the straight ones
+        (:func:`trial_point`).
 
     Returns
     -------
@@ -246,21 +301,19 @@ def newton_banded(
     n, nv = x.shape
     nt = nv if temperature_vars is None else temperature_vars
     sq = None if squared is None or not np.any(squared) else np.flatnonzero(squared)
+    lg = None if logged is None or not np.any(logged) else np.flatnonzero(logged)
     R = F(x)
     norm = float(np.max(np.abs(R))) / scale
     history = [norm]
     n_jac = 0
     log.info("Newton on %d cells x %d unknowns: residual %.3g (tolerance %.3g)", n, nv, norm, tol)
-    central = False  # forward differences until a line search fails on them
-    it = 0
-    while it < max_iter:
-        it += 1
+    for it in range(1, max_iter + 1):
         if norm <= tol:
             log.info("Newton converged in %d iterations: residual %.3g", it - 1, norm)
             return x, NewtonReport(it - 1, norm, tuple(history), n_jac)
         if not np.isfinite(norm):
             break
-        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor, central=central, local=local)
+        ab, bw = _banded_jacobian(F, x, R, step_floor=step_floor, local=local)
         n_jac += 1
         try:
             dx = solve_banded((bw, bw), ab, -R.ravel(), check_finite=False).reshape(n, nv)
@@ -271,27 +324,21 @@ def newton_banded(
         big = np.max(np.abs(dx[:, :nt])) if nt else 0.0
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         accepted = False
-        for _ in range(30):
-            xt = x + lam * dx
-            if sq is not None:
-                s = x[:, sq]
-                q = np.maximum(s * s + lam * 2.0 * s * dx[:, sq], SQUARED_FLOOR * s * s)
-                xt[:, sq] = np.copysign(np.sqrt(q), s)
-            xt[:, :nt] = np.maximum(xt[:, :nt], lower)
-            Rt = F(xt)
-            nt_norm = float(np.max(np.abs(Rt))) / scale
-            if np.isfinite(nt_norm) and (nt_norm < (1 - 1e-4 * lam) * norm or nt_norm <= tol):
-                accepted = True
+        lam0 = lam
+        for logs in (lg, None) if lg is not None else (None,):
+            lam = lam0
+            for _ in range(30):
+                xt = trial_point(x, dx, lam, sq, logs)
+                xt[:, :nt] = np.maximum(xt[:, :nt], lower)
+                Rt = F(xt)
+                nt_norm = float(np.max(np.abs(Rt))) / scale
+                if np.isfinite(nt_norm) and (nt_norm < (1 - 1e-4 * lam) * norm or nt_norm <= tol):
+                    accepted = True
+                    break
+                lam *= 0.5
+            if accepted:
                 break
-            lam *= 0.5
         if not accepted:
-            if not central:
-                # the forward differences of a stiff rate (a calcination near its equilibrium)
-                # may be too coarse for the last digits: again with central differences
-                log.info("  line search failed: the Jacobian again by central differences")
-                central = True
-                it -= 1
-                continue
             if norm <= STAGNATION_FACTOR * tol:
                 # Newton stalls at round-off just above the tolerance (e.g. the rows of a
                 # species consumed to ~1e-70 kg/s): the solution is as converged as the

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import logging
 
 import numpy as np
 
@@ -15,6 +16,9 @@ from rotarykiln.kiln.inputs.boundary import Scales
 from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.results.solution import KilnSolution
 from rotarykiln.kiln.steady import continuation as steady
+from rotarykiln.kiln.steady.newton import trial_point
+
+log = logging.getLogger(__name__)
 
 __all__ = ["solve_kiln", "finish_solution", "newton_options", "ENERGY_RTOL", "zigzag"]
 
@@ -39,6 +43,14 @@ SEQUENCE_INERT_MIN = 200
 #: gives up (the fine grid then solves from the guess, with its own continuation if needed):
 #: a coarse grid stalling at a fold costs more than that (the lime kiln: 10 s in 30 failures).
 COARSE_FAILURES = 6
+#: Feed continuation (the last fallback of a reacting solve, :func:`_feed_continuation`): the
+#: kiln first solved at its feed times these factors, in turn, until one converges (more feed:
+#: the reactions end short of completion, no front to place); then the feed stepped back to
+#: the kiln's own, halving a failed step down to FEED_MIN_STEP (a share of the feed), the
+#: intermediate feeds solved to FEED_STEP_TOL.
+FEED_START_FACTORS = (1.1, 1.25, 1.5)
+FEED_MIN_STEP = 1e-3
+FEED_STEP_TOL = 1e-8
 
 
 def _initial_guess(res: KilnResidual) -> np.ndarray:
@@ -126,20 +138,61 @@ def solve_kiln(
     if int(n_cells) != n_cells or n_cells < 4:
         raise InputError("solver.cells", n_cells, "an integer >= 4")
     res = KilnResidual(kiln, int(n_cells))
-    q_ref = res.q_ref
     kw = newton_options(res, tol=tol, max_iter=max_iter)
-    every = _every_root_squared(res, kw["squared"])
-    sequenced = initial is None and (
-        kiln.chemistry.mechanism.reactions or res.n > SEQUENCE_INERT_MIN
-    )
     x0 = _initial_guess(res) if initial is None else np.array(initial, dtype=float)
+    try:
+        x, total = _solve_unknowns(res, x0, kw, sequenced=initial is None)
+    except ConvergenceError:
+        if not kiln.chemistry.mechanism.reactions:
+            raise
+        # the last resort of a reacting kiln: the same kiln at a larger feed, where its
+        # reactions do not run to completion, stepped back to its own feed (the lime kiln
+        # 5-10 % off its feed or coal: the end of its calcination front)
+        try:
+            x, total = _feed_continuation(res, kw)
+        except ConvergenceError as exc:
+            log.info("feed continuation failed: %s", exc)
+            raise
+    x, total = _polished(res, x, total, kw)
+    return finish_solution(res, x, total, check_balances=check_balances)
+
+
+def _polished(res: KilnResidual, x: np.ndarray, total: int, kw: dict):
+    """``x`` taken on to the tolerance when its solve stalled just above it (accepted at
+    round-off, :data:`~rotarykiln.kiln.steady.newton.STAGNATION_FACTOR`): Newton from its own
+    Jacobian with Broyden's updates (:func:`~rotarykiln.kiln.steady.batch.newton_batch`),
+    which correct the forward differences of a stiff rate (a calcination near its
+    equilibrium, at a tolerance of 1e-13) along the steps taken, where a new Jacobian alone
+    cannot lower the residual further. ``(x, iterations)``: unchanged if it did not stall, or
+    if the polish does not converge."""
+    from rotarykiln.kiln.steady.batch import BROYDEN_UPDATES, BatchResidual, newton_batch
+
+    norm = float(np.max(np.abs(res.evaluate(x)))) / res.q_ref
+    if norm <= kw["tol"]:
+        return x, total
+    F = BatchResidual([res])
+    x_p, its, _, ok = newton_batch(F, x[None], F.q_ref, broyden=BROYDEN_UPDATES, **kw)
+    if not ok[0]:
+        return x, total
+    log.info("stalled at residual %.3g: polished in %d iterations", norm, int(its[0]))
+    return x_p[0], total + int(its[0])
+
+
+def _solve_unknowns(res: KilnResidual, x0, kw: dict, *, sequenced: bool):
+    """Newton from ``x0`` (grid-sequenced when ``sequenced`` and the kiln reacts or has more
+    than SEQUENCE_INERT_MIN cells), the continuation fallbacks, and for a reacting kiln the
+    continuation again with every root unknown stepped in its square: ``(x, iterations)``,
+    or ConvergenceError (the last attempt's)."""
+    kiln, q_ref = res.kiln, res.q_ref
+    every = _every_root_squared(res, kw["squared"])
+    sequenced = sequenced and bool(kiln.chemistry.mechanism.reactions or res.n > SEQUENCE_INERT_MIN)
     try:
         if sequenced:
 
             def make_residual(n):
                 return KilnResidual(kiln, n, q_ref=q_ref)
 
-            x, total = steady.newton_sequenced(
+            return steady.newton_sequenced(
                 res,
                 x0,
                 q_ref,
@@ -149,17 +202,81 @@ def solve_kiln(
                 retry_options=every,
                 **kw,
             )
-        else:
-            x, total = steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
+        return steady.newton_with_continuation(res, x0, q_ref, _continuation(res), **kw)
     except ConvergenceError:
         if every is None:
             raise
-        # the last resort: the continuation again, every root unknown stepped in its square
-        # (the lime kiln 5 % off its feed or coal: the front where its CaCO3 runs out)
-        x, total = steady.newton_with_continuation(
+        # the continuation again, every root unknown stepped in its square (a reactant of
+        # order 1/2 used up within a cell: _every_root_squared)
+        return steady.newton_with_continuation(
             res, x0, q_ref, _continuation(res), **dict(kw, **every)
         )
-    return finish_solution(res, x, total, check_balances=check_balances)
+
+
+def _with_feed(kiln: Kiln, factor: float) -> Kiln:
+    """The kiln with every feed flow times ``factor`` (all else as it is)."""
+    return kiln.replace(feed__flows={s: q * factor for s, q in kiln.feed.flows.items()})
+
+
+def _feed_continuation(res: KilnResidual, kw: dict):
+    """Solve the reacting kiln of ``res`` from the same kiln at a larger feed: ``(x, iterations)``.
+
+    A reaction front that runs to completion inside the kiln (the lime kiln's calcination:
+    the bed pinned near 900 degC while its CaCO3 lasts, then 150 K hotter per cell) has, on a
+    200-cell grid, a Newton basin of about 1/25 of a cell in the front's position: no start
+    the continuations above make (the reaction-free kiln, the coarse grid's front) lies in it
+    reliably. With more feed the reactions do not run to completion and the front is not
+    there. The kiln is solved (:func:`_solve_unknowns`) at its feed times each
+    FEED_START_FACTORS in turn until one converges, and the feed is then stepped back to the
+    kiln's own: each step starts from the secant predictor of the last two solutions (the
+    front moves nearly in proportion to the feed, so the predictor's error is of second
+    order in the step) and runs Newton with the root unknowns lowered in their logarithm
+    (``newton_banded(..., logged=...)``: the reactant's flow past the front falls by decades
+    per cell) and the stall test STEP_STALL; a step that fails is halved (down to
+    FEED_MIN_STEP of the feed), one that converges doubles the next. Intermediate steps are
+    solved to FEED_STEP_TOL, the kiln's own feed to the caller's tolerance.
+    """
+    kiln, q_ref, n = res.kiln, res.q_ref, res.n
+    logged = np.zeros(res.nv, dtype=bool)
+    logged[res.i_species : res.i_species + res.nb] = res.sqrt_mask
+    x, lam, failure = None, 1.0, None
+    for factor in FEED_START_FACTORS:
+        start = KilnResidual(_with_feed(kiln, factor), n, q_ref=q_ref)
+        skw = newton_options(start, tol=FEED_STEP_TOL, max_iter=kw["max_iter"])
+        try:
+            x, total = _solve_unknowns(start, _initial_guess(start), skw, sequenced=True)
+        except ConvergenceError as exc:
+            failure = exc
+            continue
+        lam = factor
+        break
+    if x is None:
+        raise failure
+    log.info("feed continuation: from %.4g times the feed", lam)
+    step, prev, iters = lam - 1.0, None, total
+    lg = np.flatnonzero(logged)
+    while lam > 1.0:
+        trial = max(1.0, lam - step)
+        last = trial <= 1.0
+        F = res if last else KilnResidual(_with_feed(kiln, trial), n, q_ref=q_ref)
+        xs = x
+        if prev is not None:  # secant predictor (the roots kept positive: trial_point)
+            xs = trial_point(x, x - prev[0], (lam - trial) / (prev[1] - lam), None, lg)
+        step_kw = dict(kw, logged=logged, stall=steady.STEP_STALL)
+        if not last:
+            step_kw.update(tol=FEED_STEP_TOL, where=None)
+        try:
+            x_new, rep = steady.newton.newton_banded(F, xs, q_ref, **step_kw)
+        except ConvergenceError:
+            step /= 2.0
+            if step < FEED_MIN_STEP:
+                raise
+            continue
+        log.info("feed continuation: %.6g times the feed (%d iterations)", trial, rep.iterations)
+        prev, x, lam = (x, lam), x_new, trial
+        iters += rep.iterations
+        step *= 2.0
+    return x, iters
 
 
 def _every_root_squared(res: KilnResidual, squared: np.ndarray) -> dict | None:
