@@ -498,26 +498,44 @@ def _spline_map(x: np.ndarray) -> np.ndarray:
     the coefficients of their not-a-knot cubic spline (scipy's ``PPoly`` layout, highest power
     first): ``c = np.tensordot(M, y, 1)``, scipy's ``CubicSpline(x, y).c`` to round-off."""
     x = np.asarray(x, dtype=float)
+    return _spline_coefficients(x, np.eye(len(x)))
+
+
+def _spline_coefficients(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Coefficients (4, m, k) of the not-a-knot cubic splines through the columns of ``y``
+    (shape (n, k)) at the ``n`` breakpoints ``x``: scipy's ``CubicSpline(x, y).c`` to
+    round-off.
+
+    The slopes at the breakpoints solve scipy's tridiagonal system (its not-a-knot end rows
+    are tridiagonal too), by elimination without pivoting, for every column at once: no
+    LAPACK call (whose first call in a process costs tens of ms)."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
     n = len(x)
     if n < 4:
-        raise ValueError("a not-a-knot spline map needs at least 4 breakpoints")
+        raise ValueError("a not-a-knot spline needs at least 4 breakpoints")
     dx = np.diff(x)
-    y = np.eye(n)
     slope = (y[1:] - y[:-1]) / dx[:, None]
-    a = np.zeros((n, n))
-    b = np.zeros((n, n))
-    for i in range(1, n - 1):
-        a[i, i - 1], a[i, i], a[i, i + 1] = dx[i], 2.0 * (dx[i - 1] + dx[i]), dx[i - 1]
-        b[i] = 3.0 * (dx[i] * slope[i - 1] + dx[i - 1] * slope[i])
+    sub, diag, sup = np.zeros(n), np.zeros(n), np.zeros(n)
+    rhs = np.empty(y.shape)
+    sub[1:-1], diag[1:-1], sup[1:-1] = dx[1:], 2.0 * (dx[:-1] + dx[1:]), dx[:-1]
+    rhs[1:-1] = 3.0 * (dx[1:, None] * slope[:-1] + dx[:-1, None] * slope[1:])
     d = x[2] - x[0]
-    a[0, 0], a[0, 1] = dx[1], d
-    b[0] = ((dx[0] + 2.0 * d) * dx[1] * slope[0] + dx[0] ** 2 * slope[1]) / d
+    diag[0], sup[0] = dx[1], d
+    rhs[0] = ((dx[0] + 2.0 * d) * dx[1] * slope[0] + dx[0] ** 2 * slope[1]) / d
     d = x[-1] - x[-3]
-    a[-1, -1], a[-1, -2] = dx[-2], d
-    b[-1] = (dx[-1] ** 2 * slope[-2] + (2.0 * d + dx[-1]) * dx[-2] * slope[-1]) / d
-    s = np.linalg.solve(a, b)  # slopes at the breakpoints, per unit value
+    sub[-1], diag[-1] = d, dx[-2]
+    rhs[-1] = (dx[-1] ** 2 * slope[-2] + (2.0 * d + dx[-1]) * dx[-2] * slope[-1]) / d
+    for i in range(1, n):  # forward elimination
+        w = sub[i] / diag[i - 1]
+        diag[i] -= w * sup[i - 1]
+        rhs[i] -= w * rhs[i - 1]
+    s = np.empty(y.shape)  # slopes at the breakpoints
+    s[-1] = rhs[-1] / diag[-1]
+    for i in range(n - 2, -1, -1):
+        s[i] = (rhs[i] - sup[i] * s[i + 1]) / diag[i]
     t = (s[:-1] + s[1:] - 2.0 * slope) / dx[:, None]
-    out = np.empty((4, n - 1, n))
+    out = np.empty((4, n - 1, y.shape[1]))
     out[0] = t / dx[:, None]
     out[1] = (slope - s[:-1]) / dx[:, None] - t
     out[2] = s[:-1]
@@ -598,8 +616,7 @@ class DissociationTable:
     def _spline(self) -> PiecewisePolynomials:
         """The values' splines in v (one per temperature of the grid)."""
         v = _table_variable(self.phi)
-        c = np.tensordot(_spline_map(v), self.values, 1)  # (4, nodes - 1, len(T_GRID))
-        return PiecewisePolynomials(v, c)
+        return PiecewisePolynomials(v, _spline_coefficients(v, self.values))
 
     def enthalpy(self, phi: float) -> np.ndarray:
         """:math:`\\Delta h_d` (J/kg of products, >= 0) on T_GRID at the equivalence ratio

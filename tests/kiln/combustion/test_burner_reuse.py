@@ -33,6 +33,7 @@ def _clear():
         G.fuel_data,
         F._fuel_data,
         F._table_heat,
+        F._equilibrium_temperature,
         D._heat,
         D._adiabatic,
         C._species,

@@ -546,7 +546,14 @@ def _dissociation_of(burner: Burner, products, fuel=None, streams=None):
         heat = _table_heat(fuel, oxidiser, phi, comp)
     else:
         heat = dissociation_heat(comp)
-    return heat, dissociated_adiabatic_temperature(products, heat)
+    return heat, _equilibrium_temperature(products, heat)
+
+
+@lru_cache(maxsize=256)
+def _equilibrium_temperature(products, heat) -> float:
+    """:func:`~rotarykiln.materials.combustion.dissociated_adiabatic_temperature`, kept per
+    products and dissociation heat (objects kept by their own caches: the same case again)."""
+    return dissociated_adiabatic_temperature(products, heat)
 
 
 @lru_cache(maxsize=256)
