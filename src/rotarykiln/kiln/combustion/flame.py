@@ -4,10 +4,13 @@ A burner at the gas inlet end fires ``fuel`` with a primary air stream (through 
 mixed with the fuel in the nozzle fluid) and a secondary air stream (around it: from the cooler
 or the hood). :func:`fire` turns those inputs into what the kiln's gas balance needs:
 
-- the **products** of complete combustion of all the fuel with all the air (Cantera,
-  GRI-Mech 3.0 thermochemistry, water as vapour): their property table, mass flow, the
-  temperature of the unburnt mixture (the streams mixed at constant enthalpy), the heat of
-  combustion at that state and the adiabatic temperature of the fully mixed products;
+- the **products** of complete combustion of all the fuel with all the air (GRI-Mech 3.0
+  thermochemistry, water as vapour; by elements,
+  :func:`rotarykiln.materials.combustion.complete_combustion`, without Cantera per case; a
+  rich mixture by Cantera's equilibrium at 1200 K, :func:`rotarykiln.materials.gas.burn_fuel`):
+  their property table, mass flow, the temperature of the unburnt mixture (the streams mixed
+  at constant enthalpy), the heat of combustion at that state and the adiabatic temperature of
+  the fully mixed products;
 - the **heating values** of the fuel input, LHV and HHV (W), for the energy balance sheet
   (:func:`rotarykiln.materials.gas.fuel_data`);
 - the **jet numbers** of the burner (when the nozzle diameter is given): Thring-Newby
@@ -26,7 +29,9 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
   (1 when the nozzle fluid is already lean), :math:`T_F` its adiabatic flame temperature,
   :math:`\alpha_T = 1` (:func:`rotarykiln.heat.flames.hawthorne_flame_length`);
 - the **dissociation** of the products (``products: equilibrium``, the default): their
-  dissociation heat at equilibrium (:mod:`rotarykiln.materials.dissociation`), carried by the
+  dissociation heat at equilibrium (:mod:`rotarykiln.materials.dissociation`; interpolated
+  from the fuel and oxidiser's table over the equivalence ratio when every air stream has one
+  composition, :func:`rotarykiln.materials.combustion.dissociation_table`), carried by the
   kiln gas, and the equilibrium adiabatic temperature; ``complete`` keeps the frozen products;
 - **where the fuel burns**, by the combustion model:
 
