@@ -517,20 +517,32 @@ def _term(label, value, total, keys=(), note="", row=None) -> dict:
     }
 
 
+#: The heat of combustion within this fraction of the LHV input is called the LHV input.
+COMBUSTION_GAP_RTOL = 1e-6
+
+
 def _combustion_gap(sheet: Mapping[str, Any], kiln: Mapping[str, Any]) -> str:
-    """Why the heat of combustion is not the fuel's LHV input (kiln.firing.flame, materials.gas)."""
+    """Why the heat of combustion is or is not the fuel's LHV input (kiln.firing.flame,
+    materials.combustion)."""
     lhv, heat = sheet["lhv"], sheet["combustion"]
     if not lhv or not heat:
         return ""
     gap = lhv - heat
+    if abs(gap) <= COMBUSTION_GAP_RTOL * lhv:
+        return (
+            f"The heat of combustion ({format_power(heat)}) is the LHV input within "
+            f"{COMBUSTION_GAP_RTOL:g} of it: the fuel burns completely to CO2 and H2O (vapour) "
+            "from streams at 298.15 K, the state of the heating value; the kiln's gas tables "
+            "add round-off."
+        )
     return (
         f"The heat of combustion ({format_power(heat)}) is {format_power(abs(gap))} "
         f"({100.0 * abs(gap) / lhv:.2g} % of the LHV) {'below' if gap > 0 else 'above'} the "
         "LHV input: the LHV counts complete combustion to CO2 and H2O at 298.15 K, while the "
-        "model burns the fuel with its air to the equilibrium products at 1200 K at the "
-        "temperature of the unburnt streams (Cantera, GRI-Mech 3.0), and the traces of NO and "
-        "NO2 in those products take their heat of formation (about 90 kJ per mol of NO) from "
-        "the flame; the kiln's gas tables add round-off."
+        "model burns the fuel at the temperature of the unburnt streams, where the products "
+        "hold another heat than the reactants (GRI-Mech 3.0); a rich mixture also leaves CO "
+        "and H2 unburnt (Cantera's equilibrium products at 1200 K); the kiln's gas tables add "
+        "round-off."
     )
 
 

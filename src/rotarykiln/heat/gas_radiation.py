@@ -206,7 +206,9 @@ def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=T
         check_nonnegative("p_h2o", pw)
         check_nonnegative("p_co2", pc)
         if np.any(ptot > 0):
-            for what, v, lo, hi in (("MR", mr_raw[...], 0.125, 2.0), ("T [K]", T, 500.0, 2500.0)):
+            # MR to 9 decimals: a methane flame's 2 (CO2 + 2 H2O) is inside, not round-off above
+            mr_shown = np.round(mr_raw[...], 9)
+            for what, v, lo, hi in (("MR", mr_shown, 0.125, 2.0), ("T [K]", T, 500.0, 2500.0)):
                 warn_out_of_range(
                     what,
                     v,

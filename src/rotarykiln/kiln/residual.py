@@ -253,6 +253,14 @@ class KilnResidual:
         new.q_ref = float(new.reference_heat())
         return new
 
+    def with_mixture(self, mixture) -> KilnResidual:
+        """This residual with its gas's property model ``mixture`` (a batch of kilns whose
+        burnt gases differ: each case's own, :meth:`~rotarykiln.kiln.gas_mixture.CaseMixtures.
+        take`)."""
+        new = copy.copy(self)
+        new.mixture = mixture
+        return new
+
     def hottest_source(self) -> float:
         """The hottest heat source, K: the inlet gas with all the heat released in it, a
         heating jacket's inlet gas, or a heater zone's shell set-point (for the initial guess

@@ -4,10 +4,13 @@ A burner at the gas inlet end fires ``fuel`` with a primary air stream (through 
 mixed with the fuel in the nozzle fluid) and a secondary air stream (around it: from the cooler
 or the hood). :func:`fire` turns those inputs into what the kiln's gas balance needs:
 
-- the **products** of complete combustion of all the fuel with all the air (Cantera,
-  GRI-Mech 3.0 thermochemistry, water as vapour): their property table, mass flow, the
-  temperature of the unburnt mixture (the streams mixed at constant enthalpy), the heat of
-  combustion at that state and the adiabatic temperature of the fully mixed products;
+- the **products** of complete combustion of all the fuel with all the air (GRI-Mech 3.0
+  thermochemistry, water as vapour; by elements,
+  :func:`rotarykiln.materials.combustion.complete_combustion`, without Cantera per case; a
+  rich mixture by Cantera's equilibrium at 1200 K, :func:`rotarykiln.materials.gas.burn_fuel`):
+  their property table, mass flow, the temperature of the unburnt mixture (the streams mixed
+  at constant enthalpy), the heat of combustion at that state and the adiabatic temperature of
+  the fully mixed products;
 - the **heating values** of the fuel input, LHV and HHV (W), for the energy balance sheet
   (:func:`rotarykiln.materials.gas.fuel_data`);
 - the **jet numbers** of the burner (when the nozzle diameter is given): Thring-Newby
@@ -26,7 +29,9 @@ or the hood). :func:`fire` turns those inputs into what the kiln's gas balance n
   (1 when the nozzle fluid is already lean), :math:`T_F` its adiabatic flame temperature,
   :math:`\alpha_T = 1` (:func:`rotarykiln.heat.flames.hawthorne_flame_length`);
 - the **dissociation** of the products (``products: equilibrium``, the default): their
-  dissociation heat at equilibrium (:mod:`rotarykiln.materials.dissociation`), carried by the
+  dissociation heat at equilibrium (:mod:`rotarykiln.materials.dissociation`; interpolated
+  from the fuel and oxidiser's table over the equivalence ratio when every air stream has one
+  composition, :func:`rotarykiln.materials.combustion.dissociation_table`), carried by the
   kiln gas, and the equilibrium adiabatic temperature; ``complete`` keeps the frozen products;
 - **where the fuel burns**, by the combustion model:
 
@@ -59,7 +64,6 @@ flames.md sections 1, 2 and 7 of the project's reference notes.
 
 from __future__ import annotations
 
-import threading
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -67,6 +71,14 @@ import numpy as np
 
 from rotarykiln.errors import InputError, check_positive
 from rotarykiln.heat.flames import burnout_fraction, hawthorne_flame_length
+from rotarykiln.materials.combustion import (
+    complete_combustion,
+    dissociated_adiabatic_temperature,
+    dissociation_table,
+    equivalence_ratio,
+    mixing_temperature,
+    table_pair,
+)
 from rotarykiln.materials.dissociation import (
     DISSOCIATION_SPECIES,
     dissociation_heat,
@@ -80,7 +92,6 @@ from rotarykiln.materials.gas import (
     T_REF,
     BurntGas,
     burn_fuel,
-    gri30,
     molar_mass,
     parse_composition,
 )
@@ -415,59 +426,6 @@ def _fuel_data(fuel: tuple[tuple[str, float], ...]):
     return fuel_data(fuel)
 
 
-def _mix_air_temperature(streams) -> float:
-    """Temperature of air streams mixed at constant enthalpy (Cantera), K.
-
-    Streams at one temperature mix at it; others are mixed by :func:`_mixed_temperature`
-    (computed once per set of flows, temperatures and compositions).
-    """
-    flows = [s for s in streams if s.flow > 0]
-    if len({s.temperature for s in flows}) <= 1:
-        return flows[0].temperature if flows else T_REF
-    return _mixed_temperature(tuple((s.flow, s.temperature, s.composition) for s in flows))
-
-
-_thread = threading.local()
-
-
-def _stream_phases(n: int) -> list:
-    """``n`` thermo-only Cantera phases of GRI-Mech 3.0's species, kept for this thread.
-
-    One per stream, as one fresh solution per stream was: a :class:`cantera.Quantity` starts
-    its mixing from the state its own phase holds, so each stream keeps a phase of its own.
-    Thermo only (no kinetics, no transport: ~0.1 ms to build, against ~0.05 s for the full
-    mechanism); the same species and thermochemistry, so the same numbers. Their states are
-    always set in full before use.
-    """
-    import cantera as ct
-
-    phases = getattr(_thread, "stream_phases", None)
-    if phases is None:
-        phases = _thread.stream_phases = []
-    if len(phases) < n:
-        species = gri30().species()
-        while len(phases) < n:
-            phases.append(ct.Solution(thermo="ideal-gas", species=species))
-    return phases[:n]
-
-
-@lru_cache(maxsize=256)
-def _mixed_temperature(streams: tuple[tuple[float, float, str], ...]) -> float:
-    """Temperature (K) of ``streams`` (flow kg/s, temperature K, composition by mole) mixed at
-    constant pressure and enthalpy (Cantera's :class:`~cantera.Quantity`, ``HP``; the default,
-    UV, is a rigid vessel)."""
-    import cantera as ct
-
-    total = None
-    for phase, (flow, temperature, composition) in zip(
-        _stream_phases(len(streams)), streams, strict=True
-    ):
-        phase.TPX = temperature, 101325.0, composition
-        q = ct.Quantity(phase, mass=flow, constant="HP")
-        total = q if total is None else total + q
-    return float(total.T)
-
-
 def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None) -> Flame:
     """Products, heating values, jet numbers and flame length of ``burner`` in a kiln.
 
@@ -507,10 +465,14 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
         return _fire_fired(burner, kiln_diameter, kiln_length)
     fuel = parse_composition(burner.fuel)
     mm_fuel, o2_demand, lhv, hhv = _fuel_data(fuel)
-    air = sum(a.flow for a in burner.flame_air)
-    t_air = _mix_air_temperature(burner.flame_air)
-    oxidiser = mixed_oxidiser(burner.flame_air)
-    products = burn_fuel(fuel, burner.fuel_flow, air, burner.fuel_temperature, t_air, oxidiser)
+    streams = _streams(burner.flame_air)
+    products = complete_combustion(fuel, burner.fuel_flow, burner.fuel_temperature, streams)
+    if products is None:  # rich: Cantera's equilibrium products at 1200 K
+        air = sum(a.flow for a in burner.flame_air)
+        t_air = mixing_temperature(streams)
+        oxidiser = mixed_oxidiser(burner.flame_air)
+        products = burn_fuel(fuel, burner.fuel_flow, air, burner.fuel_temperature, t_air, oxidiser)
+        streams = None
     n_o2_needed = burner.fuel_flow / mm_fuel * o2_demand
     if n_o2_needed > 0:  # the air ratio: O2 supplied over O2 needed
         lam = sum(a.moles * a.o2_fraction for a in burner.flame_air) / n_o2_needed
@@ -540,7 +502,7 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     x_w = jet["recirculation_length"]
     _check_length("recirculation", burner.recirculation_length, x_w, stirred, kiln_length)
     _check_length("flame", burner.flame_length, flame_length, burnout, kiln_length)
-    dissociation, t_eq = _dissociation_of(burner, products)
+    dissociation, t_eq = _dissociation_of(burner, products, fuel, streams)
     return Flame(
         burner=burner,
         products=products,
@@ -557,14 +519,54 @@ def fire(burner: Burner, kiln_diameter: float, kiln_length: float | None = None)
     )
 
 
-def _dissociation_of(burner: Burner, products):
+def _streams(air) -> tuple[tuple[float, float, str], ...]:
+    """(flow kg/s, temperature K, composition) of the air streams that flow."""
+    return tuple((s.flow, s.temperature, s.composition) for s in air if s.flow > 0)
+
+
+def _dissociation_of(burner: Burner, products, fuel=None, streams=None):
     """The dissociation heat of the products and their equilibrium adiabatic temperature (K),
-    or (None, None) with ``products: complete``."""
+    or (None, None) with ``products: complete``.
+
+    Products by elements (``streams``: the oxidiser streams they were burnt with) take their
+    dissociation heat from the fuel and oxidiser's table
+    (:func:`~rotarykiln.materials.combustion.dissociation_table`) when every stream has one
+    composition, else from Cantera for their composition; their equilibrium adiabatic
+    temperature is the root on the kiln's splines
+    (:func:`~rotarykiln.materials.combustion.dissociated_adiabatic_temperature`). Cantera's
+    products (``streams`` None: a rich mixture, or solid and liquid fuels) are treated by
+    Cantera alone: :func:`~rotarykiln.materials.dissociation.dissociation_heat` and
+    :func:`~rotarykiln.materials.dissociation.equilibrium_adiabatic_temperature`."""
     if burner.products != "equilibrium":
         return None, None
-    comp = [(k, x) for k, x in products.composition if k in DISSOCIATION_SPECIES]
-    heat = dissociation_heat(comp)
-    return heat, equilibrium_adiabatic_temperature(comp, products.adiabatic_temperature)
+    comp = tuple((k, x) for k, x in products.composition if k in DISSOCIATION_SPECIES)
+    if streams is None:
+        heat = dissociation_heat(comp)
+        return heat, equilibrium_adiabatic_temperature(comp, products.adiabatic_temperature)
+    oxidisers = {parse_composition(c) for _, _, c in streams}
+    oxidiser = next(iter(oxidisers))
+    if len(oxidisers) == 1 and table_pair(fuel, oxidiser):
+        # lean within round-off (complete_combustion): phi at most 1
+        phi = min(equivalence_ratio(fuel, burner.fuel_flow, streams), 1.0)
+        heat = _table_heat(fuel, oxidiser, phi, comp)
+    else:
+        heat = dissociation_heat(comp)
+    return heat, _equilibrium_temperature(products, heat)
+
+
+@lru_cache(maxsize=256)
+def _equilibrium_temperature(products, heat) -> float:
+    """:func:`~rotarykiln.materials.combustion.dissociated_adiabatic_temperature`, kept per
+    products and dissociation heat (objects kept by their own caches: the same case again)."""
+    return dissociated_adiabatic_temperature(products, heat)
+
+
+@lru_cache(maxsize=256)
+def _table_heat(fuel, oxidiser, phi: float, composition):
+    """The dissociation heat of products of ``composition`` at the equivalence ratio ``phi``
+    from the table of ``fuel`` and ``oxidiser`` (one object per case, as Cantera's cache
+    gives)."""
+    return dissociation_table(fuel, oxidiser).heat(phi, composition)
 
 
 def _check_length(what: str, given, value, needed: bool, kiln_length) -> None:
@@ -603,7 +605,7 @@ def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
     # flame length of the nozzle fluid (fuel + primary air) burning with the surroundings
     if lam_p >= 1.0:
         c_t = 1.0
-        t_f = _adiabatic(fuel, burner.fuel_flow, prim.flow, burner, t0, prim.composition)
+        t_f = _adiabatic(fuel, burner, ((prim.flow, t0, prim.composition),))
     else:
         # the surroundings (secondary air) supply the rest of the O2
         surround = sec if sec.flow > 0 else AirStream(0.0)
@@ -611,8 +613,8 @@ def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
         n_add /= surround.o2_fraction
         c_t = n0 / (n0 + n_add)
         m_add = n_add * surround.molar_mass
-        mixed = mixed_oxidiser((prim, AirStream(m_add, t0, surround.composition)))
-        t_f = _adiabatic(fuel, burner.fuel_flow, prim.flow + m_add, burner, t0, mixed)
+        oxidisers = ((prim.flow, t0, prim.composition), (m_add, t0, surround.composition))
+        t_f = _adiabatic(fuel, burner, oxidisers)
     hwh = hawthorne_flame_length(d0, c_t, t_f, t0, mm_s, mm0)
     jet = dict(
         equivalent_diameter=float(de),
@@ -625,11 +627,22 @@ def _jet_numbers(burner: Burner, fuel, mm_fuel, lam_p, kiln_diameter):
     return jet, hwh
 
 
-def _adiabatic(fuel, fuel_flow, air_flow, burner, t_air, oxidiser=AIR) -> float:
-    """Adiabatic temperature of ``fuel`` burnt with ``air_flow`` (frozen products), K."""
-    return burn_fuel(
-        fuel, fuel_flow, air_flow, burner.fuel_temperature, t_air, oxidiser
-    ).adiabatic_temperature
+def _adiabatic(fuel, burner: Burner, oxidisers) -> float:
+    """Adiabatic temperature (frozen products, K) of the burner's fuel burnt with the
+    ``oxidisers`` streams (flow kg/s, temperature K, composition): by elements, or with
+    Cantera for a rich mixture."""
+    b = complete_combustion(fuel, burner.fuel_flow, burner.fuel_temperature, oxidisers)
+    if b is None:
+        flowing = tuple(AirStream(*s) for s in oxidisers if s[0] > 0)
+        b = burn_fuel(
+            fuel,
+            burner.fuel_flow,
+            sum(s.flow for s in flowing),
+            burner.fuel_temperature,
+            mixing_temperature(oxidisers),
+            mixed_oxidiser(flowing),
+        )
+    return b.adiabatic_temperature
 
 
 def _fire_fired(burner: Burner, kiln_diameter: float, kiln_length: float | None) -> Flame:

@@ -25,7 +25,6 @@ grid sequencing) and, if that fails too, returns its own
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import logging
 import math
@@ -297,9 +296,7 @@ class BatchResidual:
         mixture when they differ."""
         if self.mixtures is None:
             return self.base
-        res = copy.copy(self.base)
-        res.mixture = self.mixtures.take(cases)
-        return res
+        return self.base.with_mixture(self.mixtures.take(cases))
 
     def full(self, x, cases, flags: list | None = None, shared: list | None = None) -> list:
         """Per case of ``cases``, what ``KilnResidual.evaluate(x[None], full=True)`` of its
