@@ -841,11 +841,14 @@ def _from_neighbour(residuals, i, solved, out, caught, opts):
 
 #: Cases of a chunk solved first, from the nearest case solved before (its Jacobian's LU
 #: kept), so that the others start from a near one: the square root of the chunk's size.
-def _seeds(chunk: list, key: dict, known: list) -> list:
+LEVEL2 = 4
+
+
+def _seeds(chunk: list, key: dict, known: list, k: int | None = None) -> list:
     """The cases of ``chunk`` solved first (:func:`_solve_group`): about the square root of
     its size, spread over its inputs (``key``: each case's scaled inputs) by farthest-point
     sampling from the cases ``known`` already (their scaled inputs)."""
-    k = int(math.isqrt(len(chunk)))
+    k = int(math.isqrt(len(chunk))) if k is None else k
     if k < 2:
         return []
     points = np.array([key[i] for i in chunk])
@@ -865,15 +868,17 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
     ``solved``; the chunk's last factors are kept in ``lu`` when it is a chunk's seeds (less
     than a tenth of the cases)."""
     with_lu = list(lu)
-    known = np.array([key[j] for j in with_lu])
     wanted = np.array([key[i] for i in chunk])
-    nearest = ((known[None, :, :] - wanted[:, None, :]) ** 2).sum(-1).argmin(1)
+
+    def nearest(among):
+        known = np.array([key[j] for j in among])
+        return [among[m] for m in ((known[None] - wanted[:, None]) ** 2).sum(-1).argmin(1)]
+
     starts, start_factors = [], []
-    for i, m in zip(chunk, nearest, strict=True):
-        near = with_lu[m]
+    for i, near, near_lu in zip(chunk, nearest(solved), nearest(with_lu), strict=True):
         p = _physical(residuals[near], out[near].fluxes["x"])
         starts.append(_unknowns(residuals[i], p))
-        start_factors.append(lu[near])
+        start_factors.append(lu[near_lu])
     rs = [residuals[i] for i in chunk]
     F = BatchResidual(rs)
     kw = newton_options(rs[0], tol=opts["tol"], max_iter=opts["max_iter"])
@@ -956,7 +961,10 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     for first_case in range(0, len(rest), size):
         chunk = rest[first_case : first_case + size]
         seeds = _seeds(chunk, key, [key[j] for j in lu])
-        for part in (seeds, [i for i in chunk if i not in set(seeds)]):
+        others = [i for i in chunk if i not in set(seeds)]
+        second = _seeds(others, key, [key[j] for j in [*lu, *seeds]], len(others) // LEVEL2)
+        others = [i for i in others if i not in set(second)]
+        for part in (seeds, second, others):
             if part:
                 _solve_chunk(residuals, part, key, lu, out, caught, opts, solved)
     if isinstance(solved_before, list):
