@@ -202,7 +202,7 @@ def shell_heat_loss(
     dt = np.sqrt((ts - ta) ** 2 + 1e-6)
     ra = G * dt / tf * d**3 / (nu * alpha)
     nusselt = churchill_chu_nusselt(ra, pr, check=check)
-    if np.any(np.asarray(wind_speed) > 0):
+    if (np.asarray(wind_speed) > 0).any():
         nf = churchill_bernstein_nusselt(rho * wind_speed * d / mu, pr)
         nusselt = np.cbrt(nusselt**3 + nf**3)
     h = nusselt * k / d

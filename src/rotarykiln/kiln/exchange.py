@@ -314,7 +314,7 @@ class CrossSectionExchange:
         p_w, p_c = gas.partial_pressures()
         L = self.geometry.beam_length
         p_sum = p_w + p_c
-        if not (np.asarray(p_sum) > 0).any():
+        if p_sum <= 0 if np.ndim(p_sum) == 0 else not (p_sum > 0).any():
             return 0.0  # no CO2 and no H2O: transparent
         if c.gas_emissivity == "johansson2011":
             return johansson_wsgg_emissivity(t_gas, p_w, p_c, L, check=check)

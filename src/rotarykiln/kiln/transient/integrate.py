@@ -325,13 +325,14 @@ class TransientKiln:
         res = self.res
         s = u.speed_factor
         gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
-        tb_c, tg_c = np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR)
+        if hb_nodes is None or hg_nodes is None:  # the enthalpies at the floored faces
+            tb_n, tg_n = np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR)
         bal = global_balance(
             res,
             fl,
             prod,
-            tb_c,
-            tg_c,
+            tb_n,
+            tg_n,
             qb,
             qg,
             u,
@@ -365,10 +366,12 @@ class TransientKiln:
         out["gas_outlet"] = {n: qg[:, go, i] for i, n in enumerate(res.gas_names)}
         return out
 
-    def jacobian(self, t, y, schedule: Schedule, run: _Run):
+    def jacobian(self, t, y, schedule: Schedule, run: _Run, f=None):
         """d(dy/dt)/dy at ``t``, ``y`` (CSC) by forward differences, the columns perturbed
         together in few colours, all evaluated with the unperturbed state in one batched call
-        of :meth:`rhs` (without its quadrature states).
+        of :meth:`rhs` (without its quadrature states); ``f``: the right-hand side at ``y``
+        when the caller has it (the batch then leaves the unperturbed state out: a state's
+        right-hand side is the same to the last bit alone or in a batch).
 
         A column (variable v of cell j) reaches the rows of the cells ``j + o`` of
         :attr:`couplings` (:meth:`probe`: the wall nodes their own cell, the nodes inside the
@@ -389,11 +392,12 @@ class TransientKiln:
         yb = y[:nm]
         h = JAC_STEP * np.maximum(np.abs(yb), self._floor_flat)
         h = (yb + h) - yb  # the step actually taken
-        Y = np.empty((k + 1, self.size))
+        base = f is None  # the unperturbed state evaluated too (last)
+        Y = np.empty((k + base, self.size))
         Y[:] = y
         Y[flat_colour, np.arange(nm)] = yb + h
-        F = self.rhs(t, Y.T, schedule, run, quadrature=False).T  # (k + 1, size)
-        dR = F[:k, :nm] - F[k, :nm]  # [colour, row]
+        F = self.rhs(t, Y.T, schedule, run, quadrature=False).T  # (k [+ 1], size)
+        dR = F[:k, :nm] - (F[k, :nm] if base else f[:nm])  # [colour, row]
         data = dR.ravel()[src] / h[step]
         J = csc_matrix((data, indices, indptr), shape=(self.size, self.size))
         J.eliminate_zeros()  # BDF's I - c J and its LU then skip them
@@ -682,20 +686,31 @@ def _integrate(fun, jac, a, b, y0, t_eval, rtol, atol, args, newton_tol, bar):
     crossed the boundary) is kept by the BDF formula only as well as its Newton iteration
     converges. The last right-hand sides are kept: when the Newton iteration fails with an old
     Jacobian, BDF evaluates a new one and starts again from the same predicted state, whose
-    right-hand side it already has.
+    right-hand side it already has (and the Jacobian's differences take it as their base).
     """
     recent = []  # the last right-hand sides evaluated, (t, y, f)
 
-    def rhs(t, y):
+    def known(t, y):
         for t_k, y_k, f_k in recent:
             if t_k == t and np.array_equal(y_k, y):
-                return f_k.copy()
+                return f_k
+        return None
+
+    def rhs(t, y):
+        f = known(t, y)
+        if f is not None:
+            return f.copy()
         f = fun(t, y, *args)
         recent.insert(0, (t, y.copy(), f.copy()))
         del recent[4:]  # a Newton iteration of scipy's BDF makes at most 4
         return f
 
-    solver = BDF(rhs, a, y0, b, rtol=rtol, atol=atol, jac=lambda t, y: jac(t, y, *args))
+    def jacobian(t, y):
+        # BDF asks for it at the predicted state whose Newton iteration failed (or at the
+        # start): its right-hand side is known
+        return jac(t, y, *args, f=known(t, y))
+
+    solver = BDF(rhs, a, y0, b, rtol=rtol, atol=atol, jac=jacobian)
     if newton_tol is not None:
         solver.newton_tol = newton_tol
     t_eval = np.asarray(t_eval, dtype=float)
