@@ -30,11 +30,11 @@ A non-reacting tracer rides with the bed: its mass :math:`m_j` in each cell leav
 the dynamic model.
 
 The system is integrated by scipy's BDF (variable order, implicit, stiff) with a Jacobian by
-forward differences (:meth:`TransientKiln.jacobian`): the columns whose cells do not overlap
-perturbed together (the couplings of each variable to the neighbouring cells probed on the
-block-tridiagonal band of the steady Newton, :meth:`TransientKiln.probe`), all evaluated in one
-batched call of the right-hand side, as a sparse matrix; BDF reuses it across steps as long as
-its Newton iteration converges. Quadrature states integrate the energy and
+forward differences (:meth:`TransientKiln.jacobian`): the columns that reach no common row
+perturbed together (the couplings of each variable to the rows of its own and the neighbouring
+cells probed on the block-tridiagonal band of the steady Newton, :meth:`TransientKiln.probe`),
+all evaluated in one batched call of the right-hand side, as a sparse matrix; BDF reuses it
+across steps as long as its Newton iteration converges. Quadrature states integrate the energy and
 every species across the two ends (feed, discharge, gas inlet and outlet), the shell loss, the
 heat released and the heat of reaction, so the energy and element balances over time are
 checked against the inventories.
