@@ -71,7 +71,7 @@ def cylinder_layer_heat_flow(k_integral_inner, k_integral_outer, r_inner, r_oute
     )
 
 
-def churchill_chu_nusselt(rayleigh, prandtl):
+def churchill_chu_nusselt(rayleigh, prandtl, *, check=True):
     r"""Natural convection from a horizontal isothermal cylinder (Churchill & Chu 1975).
 
     .. math:: Nu_D = \left[0.60 + \frac{0.387\,Ra_D^{1/6}}
@@ -82,6 +82,8 @@ def churchill_chu_nusselt(rayleigh, prandtl):
     rayleigh : float or array, -
         :math:`Ra_D = g\beta\Delta T D^3/(\nu\alpha)`, valid 1e-5 to 1e12.
     prandtl : float or array, -
+    check : bool
+        Validate the inputs (False: a caller that computed them from validated ones).
 
     Returns
     -------
@@ -97,8 +99,9 @@ def churchill_chu_nusselt(rayleigh, prandtl):
     S.W. Churchill, H.H.S. Chu, Int. J. Heat Mass Transfer 18 (1975) 1049-1053; as in
     CalebBell/ht conv_free_immersed.py.
     """
-    check_nonnegative("rayleigh", rayleigh)
-    check_positive("prandtl", prandtl)
+    if check:
+        check_nonnegative("rayleigh", rayleigh)
+        check_positive("prandtl", prandtl)
     ra = np.asarray(rayleigh, dtype=float)
     pr = np.asarray(prandtl, dtype=float)
     return (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
@@ -137,7 +140,9 @@ def churchill_bernstein_nusselt(reynolds, prandtl):
     ) ** (4 / 5)
 
 
-def shell_heat_loss(t_shell, t_ambient, outer_diameter, emissivity, air, wind_speed=0.0):
+def shell_heat_loss(
+    t_shell, t_ambient, outer_diameter, emissivity, air, wind_speed=0.0, *, check=True
+):
     r"""Heat lost by the kiln shell per unit length, convection plus radiation, W/m.
 
     .. math:: q' = \pi D_o\left[\frac{Nu\,k}{D_o}(T_{sh} - T_\infty)
@@ -159,6 +164,9 @@ def shell_heat_loss(t_shell, t_ambient, outer_diameter, emissivity, air, wind_sp
         Air properties (:func:`rotarykiln.materials.gas.air_table`).
     wind_speed : float, m/s
         Cross-wind speed, >= 0.
+    check : bool
+        Validate the inputs (the kiln's inner loop, whose wall was validated when it was
+        built and whose temperatures are floored, may pass False).
 
     Returns
     -------
@@ -175,18 +183,17 @@ def shell_heat_loss(t_shell, t_ambient, outer_diameter, emissivity, air, wind_sp
     S.W. Churchill, H.H.S. Chu, Int. J. Heat Mass Transfer 18 (1975) 1049-1053; S.W. Churchill,
     M. Bernstein, J. Heat Transfer 99 (1977) 300-306; closures.md (shell loss).
     """
-    check_range("shell.emissivity", emissivity, 0.0, 1.0, closed_high=True)
-    check_nonnegative("shell.wind_speed", wind_speed, "m/s")
-    check_positive("shell.outer_diameter", outer_diameter, "m")
-    check_positive("t_shell", t_shell, "K")
-    check_positive("t_ambient", t_ambient, "K")
+    if check:
+        check_range("shell.emissivity", emissivity, 0.0, 1.0, closed_high=True)
+        check_nonnegative("shell.wind_speed", wind_speed, "m/s")
+        check_positive("shell.outer_diameter", outer_diameter, "m")
+        check_positive("t_shell", t_shell, "K")
+        check_positive("t_ambient", t_ambient, "K")
     ts = np.asarray(t_shell, dtype=float)
     ta = np.asarray(t_ambient, dtype=float)
     tf = 0.5 * (ts + ta)
-    k = air.conductivity(tf)
-    mu = air.viscosity(tf)
+    cp, k, mu = air.cp_conductivity_viscosity(tf)
     rho = air.density(tf)
-    cp = air.cp(tf)
     nu = mu / rho
     alpha = k / (rho * cp)
     pr = nu / alpha
@@ -194,8 +201,8 @@ def shell_heat_loss(t_shell, t_ambient, outer_diameter, emissivity, air, wind_sp
     # |dT| with a tiny floor keeps Ra > 0 and the derivative smooth near dT = 0
     dt = np.sqrt((ts - ta) ** 2 + 1e-6)
     ra = G * dt / tf * d**3 / (nu * alpha)
-    nusselt = churchill_chu_nusselt(ra, pr)
-    if np.any(np.asarray(wind_speed) > 0):
+    nusselt = churchill_chu_nusselt(ra, pr, check=check)
+    if (np.asarray(wind_speed) > 0).any():
         nf = churchill_bernstein_nusselt(rho * wind_speed * d / mu, pr)
         nusselt = np.cbrt(nusselt**3 + nf**3)
     h = nusselt * k / d

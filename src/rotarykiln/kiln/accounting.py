@@ -29,6 +29,7 @@ def global_balance(
     inputs=None,
     *,
     bed_enthalpy=None,
+    gas_enthalpy=None,
     reaction_from_sources=False,
 ) -> dict:
     r"""The kiln's global energy balance of a state, W (arrays over the leading batch axis).
@@ -61,6 +62,9 @@ def global_balance(
         default the flows of ``qb`` at the feed face, speed factor 1.
     bed_enthalpy : array (..., n + 1, n_bed), J/kg, optional
         The bed species' enthalpies at ``tb_n`` when the caller has them.
+    gas_enthalpy : array (..., n + 1, n_gas), J/kg, optional
+        The gas species' enthalpies at ``tg_n`` when the caller has them (only the ends'
+        are used).
     reaction_from_sources : bool
         Take :math:`Q_{reaction}` from the residual's own chemistry sources in ``fluxes``
         (``-(q_bed_chemistry + q_gas_chemistry - q_source_gas)``, the same integral with the
@@ -104,13 +108,21 @@ def global_balance(
     else:
         solids_in = hb[..., 0, :] @ inputs.feed
     solids_out = s * (qb[..., -1, :] * hb[..., -1, :]).sum(-1)
-    ends = tg_n[..., [gi, go]]  # only the ends' gas enthalpies are needed
-    hg = res.mixture.species_enthalpy(ends)
-    gas_in = (qg[..., gi, :] * hg[..., 0, :]).sum(-1)
-    gas_out = (qg[..., go, :] * hg[..., 1, :]).sum(-1)
+    if gas_enthalpy is None:
+        ends = tg_n[..., [gi, go]]  # only the ends' gas enthalpies are needed
+        hg_in, hg_out = np.moveaxis(res.mixture.species_enthalpy(ends), -2, 0)
+    else:
+        hg_in, hg_out = gas_enthalpy[..., gi, :], gas_enthalpy[..., go, :]
+    gas_in = (qg[..., gi, :] * hg_in).sum(-1)
+    gas_out = (qg[..., go, :] * hg_out).sum(-1)
 
     def total(key):
-        return np.broadcast_to(fluxes.get(key, 0.0), batch + (n,)).sum(-1) * dz
+        v = fluxes.get(key)
+        if v is None:
+            return np.zeros(batch)  # nothing of the kind: 0 W
+        if np.shape(v) != batch + (n,):
+            v = np.broadcast_to(v, batch + (n,))
+        return v.sum(-1) * dz
 
     if not res.reacting:
         reaction = np.zeros(batch)

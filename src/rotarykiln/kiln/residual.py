@@ -322,17 +322,23 @@ class KilnResidual:
         inlet values of ``inputs`` (default the kiln's own)."""
         k, u = self.kiln, inputs or self.inputs
         batch = x.shape[:-2]
-        tb = np.concatenate([np.broadcast_to(u.feed_temperature, batch + (1,)), x[..., 0]], -1)
-        t_in = np.broadcast_to(u.gas_temperature, batch + (1,))
-        parts = [x[..., 1], t_in] if k.gas.counter_current else [t_in, x[..., 1]]
-        tg = np.concatenate(parts, -1)
-        qb = np.broadcast_to(u.feed, batch + (self.n + 1, len(self.bed_names))).copy()
+        n = self.n
+        # filled in place (the same values as concatenating the inlets and the unknowns)
+        tb = np.empty(batch + (n + 1,))
+        tb[..., :1] = u.feed_temperature
+        tb[..., 1:] = x[..., 0]
+        tg = np.empty(batch + (n + 1,))
+        tg[..., self.gas_out] = x[..., 1]
+        tg[..., slice(n, None) if k.gas.counter_current else slice(None, 1)] = u.gas_temperature
+        qb = np.empty(batch + (n + 1, len(self.bed_names)))
+        qb[...] = u.feed
         if self.bed_sources:
             qb += self.bed_source_faces
         i0 = self.i_species
         xb = x[..., i0 : i0 + self.nb]
         qb[..., 1:, self.bed_pos] = np.where(self.sqrt_mask, xb * xb, xb) * self.bed_scale
-        qg = np.broadcast_to(u.gas, batch + (self.n + 1, len(self.gas_names))).copy()
+        qg = np.empty(batch + (n + 1, len(self.gas_names)))
+        qg[...] = u.gas
         xg = x[..., i0 + self.nb : i0 + self.nb + self.ng]
         qg[..., self.gas_out, self.gas_pos] = xg * self.gas_scale
         return tb, tg, qb, qg
@@ -498,12 +504,21 @@ class KilnResidual:
         *,
         scales: Scales = FULL,
         inputs: BoundaryInputs | None = None,
+        heat_capacity_step: float | None = None,
     ):
         """Residual (..., n, nv): W per cell for the energy rows, scaled flows for species.
 
         ``scales``: the continuation parameters; ``inputs``: the inputs at the ends (default
         the kiln's own, :attr:`inputs`). With ``full``, also the per-cell fluxes, the
         production by the bed reactions, the reaction rates and the face values.
+
+        ``heat_capacity_step`` (K, with ``full``; the transient's hold-ups): also the species
+        enthalpies at the faces and their dh/dT at each cell's outlet face (the bed's face
+        j+1, the gas's outlet face) by central differences of this step, evaluated in the
+        same calls of the enthalpies as the residual's own (the same numbers as separate
+        calls): a sixth item ``(h_bed_faces, cp_bed_outlets, h_gas_faces, cp_gas_outlets)``
+        (J/kg and J/(kg K), species on the last axis). None (the steady solver's): the
+        residual as without it, to the last bit.
         """
         dz = self.dz
         u = inputs or self.inputs
@@ -527,6 +542,13 @@ class KilnResidual:
         wall_rows, q_loss = self.wall.balance(q_gw + q_rw - q_cw, tl)
         q_bed_in = q_gb + q_rb + q_cw
         m = tbn.shape[-1]
+        cp_bed = cp_gas = ()
+        if heat_capacity_step is not None:
+            # the outlet faces' temperatures +- the step, after the residual's own points
+            tb_out, tg_out = tbn[..., 1:], tgn[..., self.gas_out]
+            step = heat_capacity_step
+            cp_bed = (tb_out + step, tb_out - step)
+            cp_gas = (tg_out + step, tg_out - step)
         if self.reacting:
             prod, heat, rate, heat_gas, prod_gp = self.rates(
                 tb,
@@ -548,18 +570,23 @@ class KilnResidual:
             w_released = w_gas - prod_gp[..., self.gas_idx]
             w_gas = w_gas[..., self.gas_pos]
             # the enthalpies at the faces and at the cells' bed temperature, each in one call
-            hb_both = self.bed_enthalpy(np.concatenate([tbn, tb], -1))
-            hb_nodes, hb_cell = hb_both[..., :m, :], hb_both[..., m:, :]
-            hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, tb], -1))
-            hg_nodes, hg_at_bed = hg_both[..., :m, :], hg_both[..., m:, :]
+            hb_both = self.bed_enthalpy(np.concatenate([tbn, tb, *cp_bed], -1))
+            hb_nodes, hb_cell = hb_both[..., :m, :], hb_both[..., m : 2 * m - 1, :]
+            hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, tb, *cp_gas], -1))
+            hg_nodes, hg_at_bed = hg_both[..., :m, :], hg_both[..., m : 2 * m - 1, :]
             s_bed = -heat + (prod[..., self.bed_idx] * hb_cell).sum(-1)
             s_gas = (w_released * hg_at_bed).sum(-1) - heat_gas
         else:
             # no reactions: no sources, and no enthalpies at the cells' bed temperature (the
             # same rows as with every rate zero, for a fraction of the work)
             w_bed = w_gas = 0.0
-            hb_nodes = self.bed_enthalpy(tbn)
-            hg_nodes = self.mixture.species_enthalpy(tgn)
+            if heat_capacity_step is None:
+                hb_nodes = self.bed_enthalpy(tbn)
+                hg_nodes = self.mixture.species_enthalpy(tgn)
+            else:
+                hb_both = self.bed_enthalpy(np.concatenate([tbn, *cp_bed], -1))
+                hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, *cp_gas], -1))
+                hb_nodes, hg_nodes = hb_both[..., :m, :], hg_both[..., :m, :]
             s_bed = s_gas = 0.0
         release = self.release(scales, u)
         if self.kiln.firing.heat_release > 0:
@@ -604,7 +631,7 @@ class KilnResidual:
         if not full:
             return R
         if not self.reacting:
-            n_species, n_reactions = len(self.species.names), 0
+            n_species, n_reactions = len(self.species.species), 0
             prod = prod_gp = np.zeros(tb.shape + (n_species,))
             rate = np.zeros(tb.shape + (n_reactions,))
             heat = heat_gas = np.zeros(tb.shape)
@@ -621,7 +648,14 @@ class KilnResidual:
             chemistry["bed_depth"] = geo.depth
         fluxes = cell_report(tb, tg, fl, q_loss, co, **chemistry)
         # production by the bed reactions (the solver's global balance prices it at T_bed)
-        return R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg)
+        out = (R, fluxes, prod - prod_gp, rate, (tb_n, tg_n, qb, qg))
+        if heat_capacity_step is None:
+            return out
+        # dh/dT at the outlet faces from the last 2 (n) points of each enthalpy call
+        n2 = 2 * self.n
+        c_b = (hb_both[..., -n2 : -self.n, :] - hb_both[..., -self.n :, :]) / (2 * step)
+        c_g = (hg_both[..., -n2 : -self.n, :] - hg_both[..., -self.n :, :]) / (2 * step)
+        return out + ((hb_nodes, c_b, hg_nodes, c_g),)
 
     def release(self, scales: Scales = FULL, inputs: BoundaryInputs | None = None):
         """Heat released in the gas per metre of each cell (W/m): the kiln's release profile

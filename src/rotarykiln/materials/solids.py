@@ -231,10 +231,12 @@ class Solid:
     @staticmethod
     def _molar(T, pieces, latent, with_cp=True):
         """Molar c_p (J/(mol K)) and h (J/mol) on an array ``T`` (K): one pass per piece.
-        Without ``with_cp`` only h is computed (c_p returned as None)."""
+        Without ``with_cp`` only h is computed (c_p returned as None); the c_p without the
+        latent bump (``latent`` False) only c_p (h returned as None)."""
         segs, bounds, offsets = pieces
         cp = segs[0].cp_molar(T) if with_cp else None
-        h = segs[0].antiderivative(T) + offsets[0]
+        with_h = latent or not with_cp
+        h = segs[0].antiderivative(T) + offsets[0] if with_h else None
         if not bounds or T.size == 0:
             return cp, h
         t_max = np.fmax.reduce(T, axis=None)  # ignores NaN: other elements stay right
@@ -242,23 +244,26 @@ class Solid:
             if not t_max >= tb - 0.5 * w:
                 break
             cp_b = segs[k + 1].cp_molar(T) if with_cp else None
-            h_b = segs[k + 1].antiderivative(T) + offsets[k + 1]
+            h_b = segs[k + 1].antiderivative(T) + offsets[k + 1] if with_h else None
             if w > 0.0:
-                x = np.clip((T - (tb - 0.5 * w)) / w, 0.0, 1.0)
+                x = np.minimum(np.maximum((T - (tb - 0.5 * w)) / w, 0.0), 1.0)  # clipped
                 s = x * x * (3.0 - 2.0 * x)
-                dh = h_b - h
+                if with_h:
+                    dh = h_b - h
                 if with_cp:
                     cp_mixed = cp + s * (cp_b - cp)  # the two phases' c_p by phase fraction
                     if latent:
                         cp = cp_mixed + (6.0 / w) * x * (1.0 - x) * dh
                     else:
                         cp = cp_mixed  # continuous: a jump here made the kiln residual jump
-                h = h + s * dh
+                if with_h:
+                    h = h + s * dh
             else:
                 above = T >= tb
                 if with_cp:
                     cp = np.where(above, cp_b, cp)
-                h = np.where(above, h_b, h)
+                if with_h:
+                    h = np.where(above, h_b, h)
         return cp, h
 
     @property

@@ -237,8 +237,9 @@ def _band_jacobian(tk, t, y, sched, run):
 def test_coloured_jacobian_is_the_band_jacobian_to_the_last_bit(name, wall, barr, limestone):
     """At a random state (species off 0, a tracer held), the Jacobian of few colours has the
     entries of the band Jacobian of 3 m colours exactly: each entry is the difference quotient
-    of its own column, and the columns a colour shares never reach the same cell. Barr's lined
-    kiln (bed dispersion, counter-current gas, 6 wall nodes) needs 27 colours, not 45."""
+    of its own column, and the columns a colour shares never reach the same row. Barr's lined
+    kiln (bed dispersion, counter-current gas, 6 wall nodes) needs 18 colours, not 45 (27 when
+    a column reaches every row of the cells it reaches)."""
     kiln = barr if name == "barr_T4" else limestone
     tk, sched, _ = _system(kiln, wall)
     x, _ = tk.steady_state()
@@ -253,7 +254,7 @@ def test_coloured_jacobian_is_the_band_jacobian_to_the_last_bit(name, wall, barr
     colours = tk._structure()[1]
     assert colours < 3 * tk.m
     if name == "barr_T4":
-        assert colours == 27 and tk.m == 15
+        assert colours == 18 and tk.m == 15
 
 
 def test_probe_at_a_cold_kiln_finds_the_couplings_of_a_hot_one(barr):
@@ -261,18 +262,49 @@ def test_probe_at_a_cold_kiln_finds_the_couplings_of_a_hot_one(barr):
     of the bed flow of a cell into the cell before it (enthalpy and composition) vanishes
     there, and the band Jacobian of the cold state alone misses it; the probe's spread state
     finds it. The wall nodes reach their own cell only, the counter-current gas the next cell
-    along the gas (the one before it), the dispersed bed both neighbours."""
+    along the gas (the one before it), the dispersed bed both neighbours. Rows: the inner wall
+    reaches the cell's fluid rows (its exchange) and the first interface's; a node inside the
+    lining only the rows of its neighbouring nodes (conduction), the shell's too."""
     tk, sched, x = _system(barr, BARR_WALL)
-    cold = tk.probe(0.0, tk.pack(x), sched, _Run())
+    couplings = tk.probe(0.0, tk.pack(x), sched, _Run())
+    cold = tk.reach
     hot_tk, hot_sched, hot_x = _system(barr, BARR_WALL, tk.steady_state()[0])
-    hot = hot_tk.probe(0.0, hot_tk.pack(hot_x), hot_sched, _Run())
+    assert np.array_equal(couplings, hot_tk.probe(0.0, hot_tk.pack(hot_x), hot_sched, _Run()))
+    hot = hot_tk.reach
     assert np.array_equal(cold, hot)
     i0, nb, ng = tk.res.i_species, tk.res.nb, tk.res.ng
     assert np.array_equal(cold[2:i0], np.tile([False, True, False], (i0 - 2, 1)))
+    assert np.array_equal(cold, couplings.any(-1))
+    fluid = np.r_[0, 1, i0 : i0 + nb + ng]
+    own = couplings[:, 1]
+    assert own[2, fluid].all() and own[2, 2:4].all() and not own[2, 4:i0].any()
+    for k in range(3, i0):  # inside the lining and the shell: conduction to the neighbours
+        assert np.array_equal(np.flatnonzero(own[k]), np.arange(k - 1, min(k + 2, i0)))
     # the gas (temperature, species): its own cell and the one its gas enters (j - 1)
     gas = np.tile([True, True, False], (ng, 1))
     assert np.array_equal(cold[1], gas[0]) and np.array_equal(cold[i0 + nb : i0 + nb + ng], gas)
     assert cold[0].all() and cold[i0 : i0 + nb].all() and cold[-1].all()  # bed, tracer
+
+
+@pytest.mark.parametrize("name, wall", [("barr_T4", BARR_WALL), ("limestone_fired", U_WALL)])
+def test_columns_of_a_colour_reach_no_common_row(name, wall, barr, limestone):
+    """The colouring of the Jacobian's columns: every column has one colour, and no row is
+    reached by two columns of one colour (else their differences would mix in that entry);
+    with Barr's lining the nodes inside it share the colours of the fluid variables."""
+    kiln = barr if name == "barr_T4" else limestone
+    tk, sched, x = _system(kiln, wall)
+    tk.probe(0.0, tk.pack(x), sched, _Run())
+    flat_colour, k, src, cols, rows, indptr = tk._structure()
+    nm = tk.n * tk.m
+    assert flat_colour.shape == (nm,) and set(flat_colour) == set(range(k))
+    assert np.array_equal(cols, np.repeat(np.arange(tk.size), np.diff(indptr)))
+    pairs = flat_colour[cols] * nm + rows
+    assert np.unique(pairs).size == pairs.size  # (colour, row) met once
+    assert np.array_equal(src, pairs)
+    if name == "barr_T4":
+        colour = flat_colour.reshape(tk.n, tk.m)
+        fluid = set(colour[:, [0, 1, *range(tk.res.i_species, tk.res.nv)]].ravel())
+        assert set(colour[:, 3 : tk.res.i_species].ravel()) <= fluid
 
 
 def test_batched_boundary_flows_are_those_of_the_states_one_by_one(barr):

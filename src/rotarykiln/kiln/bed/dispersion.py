@@ -89,13 +89,10 @@ def dispersion_sources(D, holdup, q_faces, h_faces, dz, variable=None):
     h_mean = 0.5 * (h[..., 1:, :] + h[..., :-1, :])
     G = -dm * (w_mean * (h[..., 1:, :] - h[..., :-1, :])).sum(-1) + (J * h_mean).sum(-1)
     # closed ends: the centre flux of cell 0 stands for the inlet half-cell (no dispersive
-    # flux with the feed); beyond the last centre nothing leaves
-    G = G.copy()
-    J = J.copy()
+    # flux with the feed); beyond the last centre nothing leaves (G and J are new arrays)
     G[..., 0] = 0.0
     J[..., 0, :] = 0.0
-    zeros_g = np.zeros(G.shape[:-1] + (1,))
-    zeros_j = np.zeros(J.shape[:-2] + (1, J.shape[-1]))
-    G_next = np.concatenate([G[..., 1:], zeros_g], axis=-1)
-    J_next = np.concatenate([J[..., 1:, :], zeros_j], axis=-2)
-    return G - G_next, J - J_next
+    energy, species = G.copy(), J.copy()
+    energy[..., :-1] -= G[..., 1:]
+    species[..., :-1, :] -= J[..., 1:, :]
+    return energy, species

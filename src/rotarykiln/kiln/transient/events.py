@@ -180,6 +180,7 @@ class Schedule:
         cuts = sorted(c for c in cuts if 0.0 <= c <= self.until)
         self._segments = list(zip(cuts[:-1], cuts[1:], strict=True))
         self._knots = {}
+        self._last = None  # the last inputs evaluated: (segment, t, inputs)
 
     def segments(self):
         """Intervals (s) between discontinuities of the inputs."""
@@ -268,13 +269,20 @@ class Schedule:
         return self._knots[i]
 
     def inputs(self, t, segment: int) -> BoundaryInputs:
-        """The inputs at ``t`` (s) inside segment number ``segment``."""
+        """The inputs at ``t`` (s) inside segment number ``segment`` (the last ones kept: an
+        implicit step evaluates the right-hand side at one time several times)."""
+        last = self._last
+        if last is not None and last[0] == segment and last[1] == t:
+            return last[2]
         ts, vals, mat = self._segment_knots(segment)
         if len(ts) == 2 and np.array_equal(mat[0], mat[1]):
-            return vals[0]
-        v = np.array([np.interp(t, ts, mat[:, c]) for c in range(mat.shape[1])])
-        nb, ng = len(self.bed_names), len(self.gas_names)
-        return BoundaryInputs(v[:nb], v[nb], v[nb + 1 : nb + 1 + ng], *v[nb + 1 + ng :])
+            u = vals[0]
+        else:
+            v = np.array([np.interp(t, ts, mat[:, c]) for c in range(mat.shape[1])])
+            nb, ng = len(self.bed_names), len(self.gas_names)
+            u = BoundaryInputs(v[:nb], v[nb], v[nb + 1 : nb + 1 + ng], *v[nb + 1 + ng :])
+        self._last = (segment, t, u)
+        return u
 
 
 def kiln_at(kiln, u: BoundaryInputs, bed_names, gas_names):

@@ -30,11 +30,11 @@ A non-reacting tracer rides with the bed: its mass :math:`m_j` in each cell leav
 the dynamic model.
 
 The system is integrated by scipy's BDF (variable order, implicit, stiff) with a Jacobian by
-forward differences (:meth:`TransientKiln.jacobian`): the columns whose cells do not overlap
-perturbed together (the couplings of each variable to the neighbouring cells probed on the
-block-tridiagonal band of the steady Newton, :meth:`TransientKiln.probe`), all evaluated in one
-batched call of the right-hand side, as a sparse matrix; BDF reuses it across steps as long as
-its Newton iteration converges. Quadrature states integrate the energy and
+forward differences (:meth:`TransientKiln.jacobian`): the columns that reach no common row
+perturbed together (the couplings of each variable to the rows of its own and the neighbouring
+cells probed on the block-tridiagonal band of the steady Newton, :meth:`TransientKiln.probe`),
+all evaluated in one batched call of the right-hand side, as a sparse matrix; BDF reuses it
+across steps as long as its Newton iteration converges. Quadrature states integrate the energy and
 every species across the two ends (feed, discharge, gas inlet and outlet), the shell loss, the
 heat released and the heat of reaction, so the energy and element balances over time are
 checked against the inventories.
@@ -139,7 +139,14 @@ class TransientKiln:
         )
         self._floor_flat = np.tile(self.jac_floor, self.n)
         self._bed_mass = res.kiln.bed.bulk_density * res.grid.bed_area * np.ones(self.n)
-        #: which cells each variable's column reaches (offsets -1, 0, +1; :meth:`probe`)
+        #: the block of each row of a cell: 0 the fluid rows (bed and gas energy, species),
+        #: then each wall node's row, then the tracer's (:meth:`probe`)
+        self.row_block = np.zeros(self.m, dtype=np.intp)
+        self.row_block[2 : res.i_species] = np.arange(1, res.i_species - 1)
+        self.row_block[res.nv] = res.i_species - 1
+        #: which rows of the neighbouring cells each variable's column reaches (offsets -1, 0,
+        #: +1; :meth:`probe`), and which cells
+        self.couplings: np.ndarray | None = None
         self.reach: np.ndarray | None = None
         self._jac_structure = None
 
@@ -218,17 +225,14 @@ class TransientKiln:
         blk_in = Yb[:, : self.n * self.m].reshape(kb, self.n, self.m)
         x, tracer = blk_in[..., : self.nv], blk_in[..., self.nv]
         u = schedule.inputs(t, run.segment)
-        R, fl, prod, _, (tb_n, tg_n, qb, qg) = res.evaluate(x, full=True, inputs=u)
+        # the residual, with the species enthalpies at the faces and the heat capacities dh/dT
+        # at the cells' outlets (central differences of CP_STEP) from its own enthalpy calls
+        R, fl, prod, _, (tb_n, tg_n, qb, qg), (hb_nodes, c_b, hg_nodes, c_g) = res.evaluate(
+            x, full=True, inputs=u, heat_capacity_step=CP_STEP
+        )
         s = u.speed_factor
         dz = res.dz
         n = self.n
-        # the bed enthalpies at the faces and the heat capacity dh/dT at the cells' outlets
-        # (central differences of CP_STEP) in one call of the enthalpy (n + 1 + 2 n points)
-        tb_c = np.maximum(tb_n, T_FLOOR)
-        tb = tb_c[..., 1:]
-        h_all = res.bed_enthalpy(np.concatenate([tb_c, tb + CP_STEP, tb - CP_STEP], -1))
-        hb_nodes = h_all[..., : n + 1, :]
-        c_b = (h_all[..., n + 1 : 2 * n + 1, :] - h_all[..., 2 * n + 1 :, :]) / (2 * CP_STEP)
         disp_e = disp_s = None
         D = res.kiln.bed.dispersion
         holdup_m = self._bed_mass
@@ -258,12 +262,9 @@ class TransientKiln:
         h_b = hb_nodes[..., 1:, :]
         cap_b = hold.tau_bed * np.maximum((q_b * c_b).sum(-1), 1e-12 * res.bed_scale)
         blk[..., 0] = (-R[..., 0] - hold.tau_bed * (h_b * db).sum(-1) * res.bed_scale) / cap_b
-        # gas energy at the gas outlet face of each cell (enthalpy and dh/dT in one call)
+        # gas energy at the gas outlet face of each cell
         q_g = qg[..., res.gas_out, :]
-        tg = np.maximum(tg_n[..., res.gas_out], T_FLOOR)
-        g_all = res.mixture.species_enthalpy(np.concatenate([tg, tg + CP_STEP, tg - CP_STEP], -1))
-        h_g = g_all[..., :n, :]
-        c_g = (g_all[..., n : 2 * n, :] - g_all[..., 2 * n :, :]) / (2 * CP_STEP)
+        h_g = hg_nodes[..., res.gas_out, :]
         cap_g = hold.tau_gas * np.maximum((q_g * c_g).sum(-1), 1e-12 * res.gas_scale)
         blk[..., 1] = (-R[..., 1] - hold.tau_gas * (h_g * dg).sum(-1) * res.gas_scale) / cap_g
         # wall nodes: the rows are what each node receives
@@ -291,7 +292,7 @@ class TransientKiln:
             dY[:, self.n * self.m :] = 0.0
             return dY[0] if single else dY.T
         flux = self.boundary(
-            u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes, accumulation_only=not fluxes
+            u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes, hg_nodes, accumulation_only=not fluxes
         )
         dY[:, self.n * self.m :] = flux["acc"]
         if not fluxes:
@@ -303,7 +304,19 @@ class TransientKiln:
             one[k] = {name: float(v[0]) for name, v in flux[k].items()}
         return dY[0], one
 
-    def boundary(self, u, fl, prod, tb_n, tg_n, qb, qg, hb_nodes=None, accumulation_only=False):
+    def boundary(
+        self,
+        u,
+        fl,
+        prod,
+        tb_n,
+        tg_n,
+        qb,
+        qg,
+        hb_nodes=None,
+        hg_nodes=None,
+        accumulation_only=False,
+    ):
         """Flows across the kiln's boundary (W and kg/s), arrays over the batch: the energy
         terms of :func:`~rotarykiln.kiln.accounting.global_balance`, the species across the
         ends, and the outlets, the outlet flow of each species too (with
@@ -312,9 +325,20 @@ class TransientKiln:
         res = self.res
         s = u.speed_factor
         gi, go = (-1, 0) if res.kiln.gas.counter_current else (0, -1)
-        tb_c, tg_c = np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR)
+        if hb_nodes is None or hg_nodes is None:  # the enthalpies at the floored faces
+            tb_n, tg_n = np.maximum(tb_n, T_FLOOR), np.maximum(tg_n, T_FLOOR)
         bal = global_balance(
-            res, fl, prod, tb_c, tg_c, qb, qg, u, bed_enthalpy=hb_nodes, reaction_from_sources=True
+            res,
+            fl,
+            prod,
+            tb_n,
+            tg_n,
+            qb,
+            qg,
+            u,
+            bed_enthalpy=hb_nodes,
+            gas_enthalpy=hg_nodes,
+            reaction_from_sources=True,
         )
         kb = qb.shape[0]
         net_b = u.feed - s * qb[:, -1]
@@ -342,52 +366,64 @@ class TransientKiln:
         out["gas_outlet"] = {n: qg[:, go, i] for i, n in enumerate(res.gas_names)}
         return out
 
-    def jacobian(self, t, y, schedule: Schedule, run: _Run):
+    def jacobian(self, t, y, schedule: Schedule, run: _Run, f=None):
         """d(dy/dt)/dy at ``t``, ``y`` (CSC) by forward differences, the columns perturbed
         together in few colours, all evaluated with the unperturbed state in one batched call
-        of :meth:`rhs` (without its quadrature states).
+        of :meth:`rhs` (without its quadrature states); ``f``: the right-hand side at ``y``
+        when the caller has it (the batch then leaves the unperturbed state out: a state's
+        right-hand side is the same to the last bit alone or in a batch).
 
-        A column (variable v of cell j) reaches the rows of the cells ``j + o`` for the offsets
-        o of :attr:`reach` (:meth:`probe`: the wall nodes their own cell, the gas and bed
-        variables the next cell along their flow, the bed both neighbours with dispersion);
-        columns whose reached cells do not overlap share a colour (:meth:`_structure`; Barr's
-        lined kiln: 27 colours instead of the ``3 m`` = 45 of the block-tridiagonal band of
-        the steady Newton, :func:`~rotarykiln.kiln.steady.newton.colour_batch`). Every entry
-        is the difference quotient of its own column, with the step ``JAC_STEP`` x
-        max(|y|, floor) of the band Jacobian: the same entries, to the last bit. The
-        quadrature rows and columns are left empty, as in :meth:`sparsity`.
+        A column (variable v of cell j) reaches the rows of the cells ``j + o`` of
+        :attr:`couplings` (:meth:`probe`: the wall nodes their own cell, the nodes inside the
+        lining only the wall rows, the gas and bed variables the fluid rows of the next cell
+        along their flow, the bed both neighbours with dispersion); columns that reach no
+        common row share a colour (:meth:`_structure`; Barr's lined kiln: 18 colours instead
+        of the ``3 m`` = 45 of the block-tridiagonal band of the steady Newton,
+        :func:`~rotarykiln.kiln.steady.newton.colour_batch`). Every entry is the difference
+        quotient of its own column, with the step ``JAC_STEP`` x max(|y|, floor) of the band
+        Jacobian: the same entries, to the last bit; the entries that are 0 are not stored.
+        The quadrature rows and columns are left empty, as in :meth:`sparsity`.
         """
         n, m = self.n, self.m
         nm = n * m
-        if self.reach is None:
+        if self.couplings is None:
             self.probe(t, y, schedule, run)
         flat_colour, k, src, step, indices, indptr = self._structure()
         yb = y[:nm]
         h = JAC_STEP * np.maximum(np.abs(yb), self._floor_flat)
         h = (yb + h) - yb  # the step actually taken
-        Y = np.empty((k + 1, self.size))
+        base = f is None  # the unperturbed state evaluated too (last)
+        Y = np.empty((k + base, self.size))
         Y[:] = y
         Y[flat_colour, np.arange(nm)] = yb + h
-        F = self.rhs(t, Y.T, schedule, run, quadrature=False).T  # (k + 1, size)
-        dR = F[:k, :nm] - F[k, :nm]  # [colour, row]
+        F = self.rhs(t, Y.T, schedule, run, quadrature=False).T  # (k [+ 1], size)
+        dR = F[:k, :nm] - (F[k, :nm] if base else f[:nm])  # [colour, row]
         data = dR.ravel()[src] / h[step]
-        return csc_matrix((data, indices, indptr), shape=(self.size, self.size))
+        J = csc_matrix((data, indices, indptr), shape=(self.size, self.size))
+        J.eliminate_zeros()  # BDF's I - c J and its LU then skip them
+        return J
 
     def probe(self, t, y, schedule: Schedule, run: _Run, spread_only=False) -> np.ndarray:
-        """Which neighbouring cells each variable of a cell reaches: (m, 3) bool over the
-        offsets -1, 0, +1 of the row's cell from the column's, kept in :attr:`reach` (the
-        union over the calls; the cell itself always).
+        """Which rows of the neighbouring cells each variable of a cell reaches: (m, 3, m) bool
+        over the offsets -1, 0, +1 of the row's cell from the column's and the rows of that
+        cell, kept in :attr:`couplings` (the union over the calls; a variable's own row
+        always), by blocks of rows (:attr:`row_block`): the fluid rows of a cell (bed and gas
+        energy, species) are reached together, a wall node's row and the tracer's alone.
+        :attr:`reach`: the cells reached, (m, 3).
 
         The block-tridiagonal band Jacobian (``3 m`` colours,
         :func:`~rotarykiln.kiln.steady.newton.colour_batch`) by forward differences at ``y``
         and at a state spread about it (temperatures 1 to 50 K higher, the flows scaled by
-        0.9 to 1.1 and kept off 0, a seeded generator): a variable reaches a neighbour when
-        any entry of its column there differs from 0 at either state. The second state keeps
-        the couplings that vanish at ``y`` itself (the enthalpy a flow carries is 0 at
-        298.15 K: a cold kiln). :func:`simulate` probes at each solids speed a segment of the
-        schedule starts or ends with (the inputs of the segment); ``spread_only``: the
-        spread state only (the couplings at ``y`` are already known). The probe costs one
-        batched call of 2 (``3 m + 1``) states: a few Jacobians.
+        0.9 to 1.1 and kept off 0, a seeded generator): a variable reaches a block of rows
+        when any entry of its column there differs from 0 at either state. The second state
+        keeps the couplings that vanish at ``y`` itself (the enthalpy a flow carries is 0 at
+        298.15 K: a cold kiln). A fluid row takes its block with it: the reactions, the
+        exchange and the transport couple a cell's fluid rows in ways a state may hide; a wall
+        node's row is its conduction (and the inner wall's exchange), the tracer's its
+        transport. :func:`simulate` probes at each solids speed a segment of the schedule
+        starts or ends with (the inputs of the segment); ``spread_only``: the spread state
+        only (the couplings at ``y`` are already known). The probe costs one batched call of
+        2 (``3 m + 1``) states: a few Jacobians.
         """
         n, m = self.n, self.m
         nm = n * m
@@ -401,8 +437,10 @@ class TransientKiln:
         src, rows, cols, _ = band_entries(n, m)
         off = rows // m - cols // m + 1
         var = cols % m
-        reach = np.zeros((m, 3), dtype=bool) if self.reach is None else self.reach.copy()
-        reach[:, 1] = True
+        block = self.row_block[rows % m]
+        n_blocks = int(self.row_block.max()) + 1
+        hits = np.zeros((m, 3, n_blocks), dtype=bool)
+        hits[np.arange(m), 1, self.row_block] = True  # a variable's own row
         nc = 3 * m
         states = (spread,) if spread_only else (blk, spread)
         Y = np.empty((len(states), nc + 1, self.size))
@@ -418,43 +456,63 @@ class TransientKiln:
         for part in F[..., :nm]:
             dR = part[:nc] - part[nc]
             hit = dR.ravel()[src] != 0.0
-            reach[var[hit], off[hit]] = True
-        if self.reach is None or not np.array_equal(reach, self.reach):
-            self.reach = reach
+            hits[var[hit], off[hit], block[hit]] = True
+        couplings = hits[..., self.row_block]  # every row of a block reached
+        if self.couplings is not None:
+            couplings |= self.couplings
+        if self.couplings is None or not np.array_equal(couplings, self.couplings):
+            self.couplings = couplings
+            self.reach = couplings.any(-1)
             self._jac_structure = None
-        return reach
+        return couplings
 
     def _structure(self):
-        """The colouring of the Jacobian's columns for :attr:`reach` and its CSC layout,
-        computed once per reach.
+        """The colouring of the Jacobian's columns for :attr:`couplings` and its CSC layout,
+        computed once per couplings.
 
-        A variable reaching ``w`` neighbouring cells (1 to 3, its own among them) takes ``w``
-        colours, cell j the colour ``j mod w``: two of its columns in one colour are ``w`` cells
-        apart or more, so the cells they reach do not overlap. This is the fewest colours for
-        whole cells (a variable may reach any row of a cell): every cell is reached by ``w``
-        columns of each variable. Returns the colour of each flattened column, the number of
-        colours, and for every stored entry (by column, rows sorted) its place in the
-        differences ``dR[colour, row]`` and its column, with the CSC ``indices`` and
-        ``indptr`` of the whole (quadrature-padded) matrix.
+        Column (cell j, variable v) reaches the rows ``couplings[v, o + 1]`` of cell ``j + o``.
+        Columns that reach no common row share a colour: taken in turn (the variables reaching
+        the most rows first, then by cell), each column takes the first colour none of whose
+        columns reaches one of its rows (greedy colouring of the columns' intersection graph;
+        A.R. Curtis, M.J.D. Powell, J.K. Reid, IMA J. Appl. Math. 13 (1974) 117-119). A wall
+        node, which reaches the wall rows of its own cell only, shares the colours of the fluid
+        variables (Barr's lined kiln: 18 colours, 27 for whole cells, 45 for the band).
+        Returns the colour of each flattened column, the number of colours, and for every
+        stored entry (by column, rows sorted) its place in the differences ``dR[colour,
+        row]`` and its column, with the CSC ``indices`` and ``indptr`` of the whole
+        (quadrature-padded) matrix.
         """
         if self._jac_structure is None:
             n, m = self.n, self.m
-            width = self.reach.sum(1)
-            base = np.concatenate([[0], np.cumsum(width)[:-1]])
+            nm = n * m
             cells = np.arange(n)
-            flat_colour = (base + cells[:, None] % width).ravel()
             rows, cols = [], []
             for o in (-1, 0, 1):
-                j, v = np.nonzero(self.reach[:, o + 1][None, :] & (cells + o >= 0)[:, None])
-                j, v = j[j + o < n], v[j + o < n]
-                rows.append(((j + o)[:, None] * m + np.arange(m)).ravel())
-                cols.append(np.repeat(j * m + v, m))
+                v, r = np.nonzero(self.couplings[:, o + 1, :])
+                j = cells[(cells + o >= 0) & (cells + o < n)]
+                rows.append(((j + o)[:, None] * m + r).ravel())
+                cols.append((j[:, None] * m + v).ravel())
             rows, cols = np.concatenate(rows), np.concatenate(cols)
             order = np.lexsort((rows, cols))
             rows, cols = rows[order], cols[order]
             indptr = np.searchsorted(cols, np.arange(self.size + 1))
-            src = flat_colour[cols] * (n * m) + rows
-            self._jac_structure = (flat_colour, int(width.sum()), src, cols, rows, indptr)
+            # greedy colouring: used[c, row] when a column of colour c reaches the row
+            reached = self.couplings.sum((1, 2))
+            turn = sorted(range(nm), key=lambda c: (-reached[c % m], c % m, c // m))
+            used = np.zeros((0, nm), dtype=bool)
+            flat_colour = np.empty(nm, dtype=np.intp)
+            for c in turn:
+                hit = rows[indptr[c] : indptr[c + 1]]
+                free = np.flatnonzero(~used[:, hit].any(1))
+                if free.size:
+                    k = free[0]
+                else:
+                    k = used.shape[0]
+                    used = np.vstack([used, np.zeros((1, nm), dtype=bool)])
+                used[k, hit] = True
+                flat_colour[c] = k
+            src = flat_colour[cols] * nm + rows
+            self._jac_structure = (flat_colour, used.shape[0], src, cols, rows, indptr)
         return self._jac_structure
 
     def sparsity(self):
@@ -628,20 +686,31 @@ def _integrate(fun, jac, a, b, y0, t_eval, rtol, atol, args, newton_tol, bar):
     crossed the boundary) is kept by the BDF formula only as well as its Newton iteration
     converges. The last right-hand sides are kept: when the Newton iteration fails with an old
     Jacobian, BDF evaluates a new one and starts again from the same predicted state, whose
-    right-hand side it already has.
+    right-hand side it already has (and the Jacobian's differences take it as their base).
     """
     recent = []  # the last right-hand sides evaluated, (t, y, f)
 
-    def rhs(t, y):
+    def known(t, y):
         for t_k, y_k, f_k in recent:
             if t_k == t and np.array_equal(y_k, y):
-                return f_k.copy()
+                return f_k
+        return None
+
+    def rhs(t, y):
+        f = known(t, y)
+        if f is not None:
+            return f.copy()
         f = fun(t, y, *args)
         recent.insert(0, (t, y.copy(), f.copy()))
         del recent[4:]  # a Newton iteration of scipy's BDF makes at most 4
         return f
 
-    solver = BDF(rhs, a, y0, b, rtol=rtol, atol=atol, jac=lambda t, y: jac(t, y, *args))
+    def jacobian(t, y):
+        # BDF asks for it at the predicted state whose Newton iteration failed (or at the
+        # start): its right-hand side is known
+        return jac(t, y, *args, f=known(t, y))
+
+    solver = BDF(rhs, a, y0, b, rtol=rtol, atol=atol, jac=jacobian)
     if newton_tol is not None:
         solver.newton_tol = newton_tol
     t_eval = np.asarray(t_eval, dtype=float)

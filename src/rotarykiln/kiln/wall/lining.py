@@ -19,10 +19,16 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
-from rotarykiln.errors import OutOfRangeWarning
+from rotarykiln.errors import (
+    OutOfRangeWarning,
+    check_nonnegative,
+    check_positive,
+    check_range,
+)
 from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
 from rotarykiln.materials.gas import GasPropertyTable, air_table
 from rotarykiln.materials.lining import Layer
@@ -111,6 +117,13 @@ class LinedWall:
     heater_power: np.ndarray | None = None
     heater_setpoint: np.ndarray | None = None
 
+    def __post_init__(self):
+        # checked once here: the shell loss of the residual's balance does not check again
+        check_range("shell.emissivity", self.eps_shell, 0.0, 1.0, closed_high=True)
+        check_nonnegative("shell.wind_speed", self.wind_speed, "m/s")
+        check_positive("shell.outer_diameter", self.radii[-1], "m")
+        check_positive("t_ambient", self.ambient_temperature, "K")
+
     @classmethod
     def of(cls, kiln, grid) -> LinedWall:
         """The wall of a kiln model with ``layers``, ``eps_shell``, ``ambient_temperature``,
@@ -140,6 +153,32 @@ class LinedWall:
         held = ~np.isnan(self.heater_setpoint)
         return np.where(held, q_loss - q_last, self.heater_power)
 
+    @cached_property
+    def _conduction(self):
+        """The runs of consecutive layers of one material, ``(first, end, material)`` (layers
+        ``first`` to ``end - 1``), and ln(r_out / r_in) of every layer, shape
+        ``(n_cells, n_layers)``: what :meth:`balance` needs of the geometry, computed once (a
+        lining cut into sub-layers is a few runs of one material)."""
+        runs, first = [], 0
+        for i in range(1, len(self.layers) + 1):
+            if i == len(self.layers) or self.layers[i].material != self.layers[first].material:
+                runs.append((first, i, self.layers[first].material))
+                first = i
+        radii = np.asarray(self.radii, dtype=float)
+        return tuple(runs), np.log(radii[1:] / radii[:-1]).T
+
+    def layer_flows(self, tl):
+        """Heat conducted through every lining layer (W/m, ``(..., n, n_layers)``) at the wall
+        temperatures ``tl``: :func:`~rotarykiln.heat.wall.cylinder_layer_heat_flow` of each
+        layer, the Kirchhoff potential of a run of layers of one material in one call (the
+        same numbers as layer by layer)."""
+        runs, log_ratio = self._conduction
+        parts = []
+        for first, end, material in runs:
+            K = material.conductivity_integral(tl[..., first : end + 1])
+            parts.append(2.0 * np.pi * (K[..., :-1] - K[..., 1:]) / log_ratio[:, first:end])
+        return parts[0] if len(parts) == 1 else np.concatenate(parts, -1)
+
     def _layer_flow(self, tl, i):
         """Heat conducted through lining layer ``i`` (W/m) at the wall temperatures ``tl``."""
         mat = self.layers[i].material
@@ -151,7 +190,7 @@ class LinedWall:
             check=False,  # layer thicknesses are checked > 0 when the layers are built
         )
 
-    def _shell_loss(self, tl):
+    def _shell_loss(self, tl, check=True):
         """Loss of the shell to the ambient (W/m) at the wall temperatures ``tl``."""
         return shell_heat_loss(
             tl[..., -1],
@@ -160,6 +199,7 @@ class LinedWall:
             self.eps_shell,
             self.air,
             self.wind_speed,
+            check=check,
         )
 
     @property
@@ -185,12 +225,14 @@ class LinedWall:
         temperatures (K, ``(..., n, n_temperatures)``).
         """
         tl = t_wall
-        q_layers = [self._layer_flow(tl, i) for i in range(len(self.layers))]
-        q_loss = self._shell_loss(tl)
-        rows = [q_in - q_layers[0]]
-        for i in range(1, len(self.layers)):
-            rows.append(q_layers[i - 1] - q_layers[i])
-        shell = q_layers[-1] - q_loss
+        q_layers = self.layer_flows(tl)
+        # the residual's wall temperatures are floored (T_FLOOR), the wall checked when built
+        q_loss = self._shell_loss(tl, check=False)
+        # what each interface receives from the layer inside less what it passes on
+        between = q_layers[..., :-1] - q_layers[..., 1:]
+        rows = [q_in - q_layers[..., 0]]
+        rows += [between[..., i] for i in range(len(self.layers) - 1)]
+        shell = q_layers[..., -1] - q_loss
         if self.heater_power is not None:
             held = ~np.isnan(self.heater_setpoint)
             # set-point cells: the shell temperature is held (residual in W/m through a
