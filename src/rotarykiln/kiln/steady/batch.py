@@ -57,9 +57,10 @@ __all__ = [
 #: Memory the batched Jacobian may take, bytes (the batch size is reduced to fit it).
 BATCH_MEMORY = 256 * 2**20
 #: Bytes per Jacobian entry ``(case, colour, cell, unknown)`` a residual evaluation needs at
-#: its peak (its temporaries). Measured with tracemalloc on a batch of 20 cases, 3 colours per
-#: unknown: 233 (Barr T4), 185 (Tscheng A16), 198 (limestone_fired); 400 leaves room for a
-#: kiln with more species or reactions.
+#: its peak (its temporaries). Measured with tracemalloc on a batch of 20 cases (2026-12-04,
+#: the local unknowns one colour each): 95 (Tscheng A16), 137 (Barr T4), 242
+#: (limestone_fired), 141 (the cement kiln); 400 leaves room for a kiln with more species or
+#: reactions.
 BYTES_PER_ENTRY = 400
 #: A kept Jacobian (chord iteration) is evaluated again after a step that reduced the
 #: residual by less than this factor.
@@ -231,7 +232,8 @@ def batch_size_for(res: KilnResidual, requested: int | None = None, memory=BATCH
     cases when None), reduced, with a logged note, to what fits in ``memory`` bytes."""
     if requested is not None and (int(requested) != requested or requested < 1):
         raise InputError("batch", requested, "an integer >= 1 (cases solved together)")
-    per_case = 3 * res.nv * res.n * res.nv * BYTES_PER_ENTRY
+    colours = coloured_pattern(res.n, res.nv, tuple(bool(v) for v in res.local))[0]
+    per_case = colours * res.n * res.nv * BYTES_PER_ENTRY
     fits = max(1, int(memory // per_case))
     if requested is None:
         return fits
