@@ -47,3 +47,18 @@ def test_a_bad_case_in_a_batched_sweep_fails_alone(base):
 def test_a_batch_size_below_one_is_refused(base, bad):
     with pytest.raises(InputError, match="sweep.batch"):
         run_sweep(kiln_model, base, DESIGN, executor="serial", batch=bad)
+
+
+def test_a_batched_chunk_makes_no_case_dict_it_does_not_need(monkeypatch):
+    """A chunk's cases are made from the base and their changes (case_with): the deep copies
+    of the base as case dicts are made only when asked for (a case case_with cannot take)."""
+    from rotarykiln.studies import runner
+
+    made = []
+    real = runner.with_values
+    monkeypatch.setattr(runner, "with_values", lambda *a, **k: made.append(1) or real(*a, **k))
+    base = yaml.safe_load(builtin_case_path("tscheng_A16").read_text())
+    design = grid({"operation.speed": ["1.5 rpm", "2 rpm", "2.5 rpm"]})
+    rows = runner._run_chunk(kiln_model, base, design, False)
+    assert all(not r["error"] for r in rows) and len(rows) == 3
+    assert made == []

@@ -44,6 +44,7 @@ mixtures); B.E. Poling, J.M. Prausnitz, J.P. O'Connell, The Properties of Gases 
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
@@ -160,10 +161,17 @@ class GasMixture:
     def _fallback_cp(self, i: int) -> float:
         return default_species()[self.names[i]].cp
 
+    def with_dissociation(self, dissociation) -> GasMixture:
+        """This mixture with another dissociation heat (a burner's other products): the same
+        species and tables, their stacked pieces reused (the same floats as building it)."""
+        new = dataclasses.replace(self, dissociation=dissociation)
+        new.__dict__["_table_pieces"] = self._table_pieces  # (cached_property storage)
+        return new
+
     @cached_property
-    def _fits(self):
-        """Stacked fits: (cp, h, conductivity and viscosity side by side), the cp at T_MIN and
-        T_MAX (slopes of the enthalpy's linear extensions) and the transport weights."""
+    def _table_pieces(self):
+        """The species tables' pieces stacked, without a dissociation heat: c_p (4, m, n), h
+        (5, m, n) and the conductivities and viscosities side by side (4, m, 2 n)."""
         n = len(self.names)
         m = len(T_GRID) - 1
         cp = np.zeros((4, m, n))
@@ -183,6 +191,13 @@ class GasMixture:
             h[:, :, i] = tab._h.c
             tr[:, :, i] = tab._k.c
             tr[:, :, n + i] = tab._mu.c
+        return cp, h, tr
+
+    @cached_property
+    def _fits(self):
+        """Stacked fits: (cp, h, conductivity and viscosity side by side), the cp at T_MIN and
+        T_MAX (slopes of the enthalpy's linear extensions) and the transport weights."""
+        cp, h, tr = (a.copy() for a in self._table_pieces)
         if self.dissociation is not None:
             cp_d, h_d = fit_pieces(self.dissociation)
             for i, name in enumerate(self.names):

@@ -244,7 +244,7 @@ class KilnResidual:
         flame = k.firing.flame
         dissociation = flame.dissociation if flame is not None else None
         if dissociation is not self.mixture.dissociation:  # another burnt gas
-            new.mixture = mixture_of(self.gas_names, self.species, dissociation)
+            new.mixture = self.mixture.with_dissociation(dissociation)
         release = release_per_cell(k.firing.heat_release, k.firing.profile, self.z, self.dz)
         new.grid = dataclasses.replace(self.grid, heat_release=release)
         new.bed_source, new.bed_source_faces = new._bed_sources()

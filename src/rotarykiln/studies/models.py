@@ -74,7 +74,7 @@ def kiln_solutions(cases, warnings_out=None, *, base=None, changes=None) -> list
     from rotarykiln.kiln.steady.batch import solve_batch
 
     cases = cases if isinstance(cases, Sequence) else list(cases)
-    caught = warnings_out if warnings_out is not None else [[] for _ in cases]
+    caught = warnings_out if warnings_out is not None else [[] for _ in range(len(cases))]
     out: list = [None] * len(cases)
     by_cells: dict[int, list] = {}
     base_case = None

@@ -128,7 +128,7 @@ def _run_batched(func, base, specs, create) -> list[dict]:
     ]
     where = list(range(len(specs)))  # run_sweep checked every path set up front
     cases = _CaseDicts(base, [s.values for s in specs], create)
-    caught: list[list] = [[] for _ in cases]
+    caught: list[list] = [[] for _ in range(len(cases))]  # (not iterated: made when asked)
     with warnings.catch_warnings(record=True) as shared:
         warnings.simplefilter("always")
         try:

@@ -123,6 +123,27 @@ def test_a_residual_of_another_operating_point_is_the_residual_built_for_it(name
     ]
     assert differ == []
     assert variant.q_ref != KilnResidual(kiln, cells).q_ref  # it did change with the inputs
+    T = np.linspace(250.0, 3300.0, 700)
+    for what in ("species_enthalpy", "species_cp"):
+        want = getattr(built.mixture, what)(T)
+        assert np.array_equal(getattr(variant.mixture, what)(T), want)
+
+
+def test_a_burner_at_another_fuel_flow_gives_the_residual_built_for_it():
+    """Another fuel flow burns to another gas (its own dissociation heat): the variant's gas
+    mixture reuses the stacked species tables and evaluates as the one built, bit for bit."""
+    from rotarykiln.case import case_with
+
+    base = load_case(builtin_case_path("barr_T4"))
+    kiln, cells = kiln_from_case(base)
+    other = kiln_from_case(case_with(base, {"burner.fuel_flow": "2.05 L/s"}))[0]
+    built, variant = KilnResidual(other, cells), KilnResidual(kiln, cells).with_kiln(other)
+    assert variant.mixture.dissociation is other.firing.flame.dissociation
+    assert variant.mixture.dissociation is not kiln.firing.flame.dissociation
+    T = np.linspace(250.0, 3300.0, 700)
+    for what in ("species_enthalpy", "species_cp"):
+        assert np.array_equal(getattr(variant.mixture, what)(T), getattr(built.mixture, what)(T))
+    assert variant.q_ref == built.q_ref
 
 
 def test_batch_residuals_build_one_residual_per_structure():
