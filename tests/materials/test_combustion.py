@@ -11,13 +11,10 @@ import dataclasses
 
 import numpy as np
 import pytest
-import yaml
+from hot_limestone_kiln import hot_kiln
 from scipy.interpolate import CubicSpline
 
-from rotarykiln.case import parse_case
-from rotarykiln.cases import builtin_case_path
 from rotarykiln.kiln.combustion import flame as F
-from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.materials import combustion as C
 from rotarykiln.materials import dissociation as D
 from rotarykiln.materials.gas import AIR, T_GRID, burn_fuel, gas_table, parse_composition
@@ -187,21 +184,6 @@ def test_fire_takes_the_table_and_refires_to_the_last_bit():
     )
 
 
-def _hot_kiln(products):
-    """test_dissociation's hot kiln: limestone_fired with 10 % excess air, the secondary air
-    at 1000 K, 8 instead of 12 Nm3/h of gas for three times the limestone."""
-    data = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
-    b = data["burner"]
-    b["products"] = products
-    data["operation"]["feed"] = "126 kg/h"
-    b["fuel_flow"] = "8 Nm3/h"
-    b["secondary_air"]["temperature"] = "1000 K"
-    air = 1.10 * (8.0 * 0.95 * 2 + 8.0 * 0.03 * 3.5) / 0.21
-    b["primary_air"]["flow"] = f"{0.25 * air:.6g} Nm3/h"
-    b["secondary_air"]["flow"] = f"{0.75 * air:.6g} Nm3/h"
-    return data, kiln_from_case(parse_case(data))[0]
-
-
 def test_kiln_temperatures_from_the_table_are_cantera_s(monkeypatch):
     """A hot, nearly stoichiometric kiln (test_dissociation's: 10 % excess air, secondary air
     at 1000 K, an equilibrium adiabatic temperature of 2403 K) solved with the table's
@@ -209,14 +191,14 @@ def test_kiln_temperatures_from_the_table_are_cantera_s(monkeypatch):
     when written), outlet temperatures within 1e-4 K (3e-6 K gas, 4e-5 K bed)."""
     from rotarykiln.kiln.steady.solve import solve_kiln
 
-    _, kiln = _hot_kiln("equilibrium")
+    _, kiln = hot_kiln("equilibrium")
     flame = kiln.firing.flame
     assert flame.adiabatic_temperature > 2000.0
     F._table_heat.cache_clear()
     monkeypatch.setattr(
         F, "_table_heat", lambda fuel, oxidiser, phi, comp: D.dissociation_heat(comp)
     )
-    _, exact = _hot_kiln("equilibrium")
+    _, exact = hot_kiln("equilibrium")
     assert not np.array_equal(exact.firing.flame.dissociation.spline.c, flame.dissociation.spline.c)
     d_in = abs(exact.firing.flame.adiabatic_temperature - flame.adiabatic_temperature)
     a, b = solve_kiln(kiln, 100), solve_kiln(exact, 100)

@@ -7,12 +7,9 @@ from __future__ import annotations
 import cantera as ct
 import numpy as np
 import pytest
-import yaml
+from hot_limestone_kiln import hot_kiln
 
-from rotarykiln.case import parse_case
-from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.steady.solve import solve_kiln
 from rotarykiln.materials.dissociation import (
     DISSOCIATION_SPECIES,
@@ -74,26 +71,9 @@ def test_unknown_product_species_refused():
         dissociation_enthalpy("CO2:1, NO:0.1, N2:5", 2000.0)
 
 
-def _hot_kiln(products):
-    data = yaml.safe_load(builtin_case_path("limestone_fired").read_text())
-    b = data["burner"]
-    b["products"] = products
-    # a hot, nearly stoichiometric flame: 10 % excess air, the secondary air from a cooler,
-    # 8 instead of 12 Nm3/h of gas for three times the limestone
-    data["operation"]["feed"] = "126 kg/h"
-    b["fuel_flow"] = "8 Nm3/h"
-    b["secondary_air"]["temperature"] = "1000 K"
-    fuel = 8.0 * 0.95 * 2 + 8.0 * 0.03 * 3.5  # Nm3/h of O2 for the natural gas
-    air = 1.10 * fuel / 0.21
-    b["primary_air"]["flow"] = f"{0.25 * air:.6g} Nm3/h"
-    b["secondary_air"]["flow"] = f"{0.75 * air:.6g} Nm3/h"
-    kiln, _ = kiln_from_case(parse_case(data))
-    return data, kiln
-
-
 def test_fired_kiln_enters_at_the_equilibrium_adiabatic_temperature():
-    data, kiln = _hot_kiln("equilibrium")
-    _, frozen = _hot_kiln("complete")
+    data, kiln = hot_kiln("equilibrium")
+    _, frozen = hot_kiln("complete")
     flame, flame_fr = kiln.firing.flame, frozen.firing.flame
     # independent: Cantera HP equilibrium (no nitrogen oxides) of the unburnt fuel and air
     gas = _restricted()
@@ -123,8 +103,8 @@ def test_fired_kiln_enters_at_the_equilibrium_adiabatic_temperature():
 
 
 def test_fired_kiln_with_dissociation_closes_its_balances():
-    _, kiln = _hot_kiln("equilibrium")
-    _, frozen = _hot_kiln("complete")
+    _, kiln = hot_kiln("equilibrium")
+    _, frozen = hot_kiln("complete")
     sol, sol_fr = solve_kiln(kiln, 100), solve_kiln(frozen, 100)
     for s in (sol, sol_fr):
         assert abs(s.energy_closure) < 1e-6

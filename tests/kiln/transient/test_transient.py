@@ -4,15 +4,16 @@ the Jacobian BDF is given (issue 25): fewer colours than the steady Newton's blo
 band, the same entries, its couplings found at a cold kiln too; the outputs' boundary flows are
 those of the states one by one."""
 
-import warnings
-
 import numpy as np
 import pytest
 from scipy.sparse import csc_matrix
+from transient_kilns import (  # noqa: F401 (the fixtures)
+    BARR_WALL,
+    U_WALL,
+    barr_fixture,
+    limestone_fixture,
+)
 
-from rotarykiln.case import load_case
-from rotarykiln.cases import builtin_case_path
-from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.steady.newton import band_entries, colour_batch
 from rotarykiln.kiln.transient.events import Schedule, kiln_at
 from rotarykiln.kiln.transient.holdup import Holdup
@@ -24,31 +25,6 @@ from rotarykiln.kiln.transient.integrate import (
     simulate,
 )
 from rotarykiln.transient_file import parse_transient
-
-BARR_WALL = {
-    "layers": [
-        {"density": "1300 kg/m3", "specific_heat": "1000 J/kg/K"},
-        {"density": "7850 kg/m3", "specific_heat": "490 J/kg/K"},
-    ]
-}
-U_WALL = {"thickness": "50 mm", "density": "2000 kg/m3", "specific_heat": "1000 J/kg/K"}
-
-
-def _kiln(name):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        kiln, _ = kiln_from_case(load_case(builtin_case_path(name)))
-    return kiln
-
-
-@pytest.fixture(scope="module")
-def barr():
-    return _kiln("barr_T4")
-
-
-@pytest.fixture(scope="module")
-def limestone():
-    return _kiln("limestone_fired")
 
 
 def _new_steady(kiln, n, tr, until):

@@ -4,17 +4,18 @@ the Jacobian's differences from a right-hand side already known, the inputs of a
 gas enthalpies handed to the global balance, a lining's sub-layers of one material in one call,
 the shell loss's air properties at one lookup."""
 
-import warnings
-
 import numpy as np
 import pytest
+from transient_kilns import (  # noqa: F401 (the fixtures)
+    BARR_WALL,
+    U_WALL,
+    barr_fixture,
+    limestone_fixture,
+)
 
-from rotarykiln.case import load_case
-from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import InputError
 from rotarykiln.heat.wall import cylinder_layer_heat_flow, shell_heat_loss
 from rotarykiln.kiln.accounting import global_balance
-from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.residual import T_FLOOR
 from rotarykiln.kiln.transient.events import Schedule
 from rotarykiln.kiln.transient.holdup import Holdup
@@ -28,31 +29,6 @@ from rotarykiln.kiln.wall.lining import LinedWall
 from rotarykiln.materials.gas import air_table
 from rotarykiln.materials.lining import Layer, load_lining_material
 from rotarykiln.transient_file import parse_transient
-
-BARR_WALL = {
-    "layers": [
-        {"density": "1300 kg/m3", "specific_heat": "1000 J/kg/K"},
-        {"density": "7850 kg/m3", "specific_heat": "490 J/kg/K"},
-    ]
-}
-U_WALL = {"thickness": "50 mm", "density": "2000 kg/m3", "specific_heat": "1000 J/kg/K"}
-
-
-def _kiln(name):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        kiln, _ = kiln_from_case(load_case(builtin_case_path(name)))
-    return kiln
-
-
-@pytest.fixture(scope="module")
-def barr():
-    return _kiln("barr_T4")
-
-
-@pytest.fixture(scope="module")
-def limestone():
-    return _kiln("limestone_fired")
 
 
 def _system(kiln, wall, events=(), until=3600.0):
