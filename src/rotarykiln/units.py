@@ -396,12 +396,31 @@ def _text_to_si(text: str, kind: str) -> float:
     if m and m.group(2) and kind != "angle":
         conversion = _unit_conversion(m.group(2), kind)
         if conversion is not None:
-            factor, offset = conversion
-            value = float(m.group(1))
-            si = value * factor if offset == 0.0 else value + offset
+            si = converted(float(m.group(1)), conversion)
             if math.isfinite(si):
                 return si
     return _convert_text("", text, kind)
+
+
+def linear_conversion(zero: float, one: float) -> tuple[float, float] | None:
+    """``(factor, offset)`` of a unit from its conversions of 0 and 1 (``zero``, ``one``, in
+    the target unit): a factor (``zero`` 0) or a kelvin offset (``one - zero`` exactly 1, degC
+    to K); None for anything else (degF: through pint each time) or a non-finite one."""
+    if not (math.isfinite(zero) and math.isfinite(one)):
+        return None
+    if zero == 0.0:
+        return one, 0.0
+    if one - zero == 1.0:
+        return 1.0, zero
+    return None
+
+
+def converted(number: float, conversion: tuple[float, float]) -> float:
+    """``number`` times the factor, or plus the offset, of :func:`linear_conversion`: the
+    same float as pint's conversion (which multiplies by the same factor or adds the same
+    offset)."""
+    factor, offset = conversion
+    return number * factor if offset == 0.0 else number + offset
 
 
 @lru_cache(maxsize=256)
@@ -413,15 +432,11 @@ def _unit_conversion(unit: str, kind: str) -> tuple[float, float] | None:
     through pint each time) or that ``kind`` refuses (the text is then refused by pint, with
     its message)."""
     try:
-        zero = _convert_text("", f"0 {unit}", kind)
-        one = _convert_text("", f"1 {unit}", kind)
+        return linear_conversion(
+            _convert_text("", f"0 {unit}", kind), _convert_text("", f"1 {unit}", kind)
+        )
     except InputError:
         return None
-    if zero == 0.0 and math.isfinite(one):
-        return one, 0.0
-    if one - zero == 1.0:
-        return 1.0, zero
-    return None
 
 
 @lru_cache(maxsize=256)

@@ -79,3 +79,11 @@ def test_the_latin_hypercube_is_scipys(d, n, seed):
 
     want = qmc.LatinHypercube(d=d, seed=seed).random(n)
     assert np.array_equal(unit_latin_hypercube(d, n, seed), want)
+
+
+@pytest.mark.parametrize(("d", "n"), [(0, 5), (2, 0), (2, 2.5), (-1, 3)])
+def test_a_latin_hypercube_of_no_points_or_dimensions_is_refused(d, n):
+    from rotarykiln.studies.design import unit_latin_hypercube
+
+    with pytest.raises(InputError, match="an integer >= 1"):
+        unit_latin_hypercube(d, n)

@@ -166,9 +166,9 @@ def _si_text(value: str) -> float:
     if m and m.group(2):
         conversion = _base_conversion(m.group(2))
         if conversion is not None:
-            factor, offset = conversion
-            number = float(m.group(1))
-            return number * factor if offset == 0.0 else number + offset
+            from rotarykiln.units import converted
+
+            return converted(float(m.group(1)), conversion)
     return _pint_si(value)
 
 
@@ -190,14 +190,9 @@ def _base_conversion(unit: str) -> tuple[float, float] | None:
     """``(factor, offset)`` of a unit to pint's base units, as
     :func:`rotarykiln.units._unit_conversion` (the same floats as pint's conversion of a
     whole text); None for a unit that is neither a factor nor a kelvin offset, or a label."""
-    zero, one = _pint_si(f"0 {unit}"), _pint_si(f"1 {unit}")
-    if not (math.isfinite(zero) and math.isfinite(one)):
-        return None
-    if zero == 0.0:
-        return one, 0.0
-    if one - zero == 1.0:
-        return 1.0, zero
-    return None
+    from rotarykiln.units import linear_conversion
+
+    return linear_conversion(_pint_si(f"0 {unit}"), _pint_si(f"1 {unit}"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -582,6 +577,9 @@ def unit_latin_hypercube(d: int, n: int, seed: int | None = 0) -> np.ndarray:
     ----------
     McKay, Beckman & Conover (1979), Technometrics 21, 239-245; scipy.stats.qmc.LatinHypercube.
     """
+    for name, v in (("dimensions", d), ("points", n)):
+        if isinstance(v, bool) or int(v) != v or v < 1:
+            raise InputError(f"latin_hypercube.{name}", v, "an integer >= 1")
     rng = np.random.default_rng(seed)
     samples = rng.uniform(size=(n, d))
     perms = np.tile(np.arange(1, n + 1), (d, 1))

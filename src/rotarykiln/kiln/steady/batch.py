@@ -66,9 +66,12 @@ BYTES_PER_ENTRY = 400
 #: residual by less than this factor.
 CHORD_RATE = 0.1
 #: With Broyden updates, a kept Jacobian is evaluated again after a step that reduced the
-#: residual by less than this factor.
+#: residual by less than this factor. Chosen among 0.1, 0.3, 0.5 and 0.8 by the residual
+#: evaluations a case needed (Tscheng A16 at 500 operating points, Barr T4 at 200: 0.5 and 0.8
+#: close, 0.1 the most); it changes the path, not the root each case converges to.
 BROYDEN_RATE = 0.5
-#: Broyden updates of a kept Jacobian in a batch's Newton iteration (:func:`newton_batch`).
+#: Broyden updates of a kept Jacobian in a batch's Newton iteration (:func:`newton_batch`),
+#: not compared with other values.
 BROYDEN_UPDATES = 12
 #: Kiln fields that are the boundary inputs of a batch (they may differ between its cases).
 BOUNDARY_FIELDS = frozenset(
@@ -189,7 +192,8 @@ def _fits(base: KilnResidual, kiln: Kiln) -> bool:
     """Does ``kiln`` share the model structure of the residual ``base``
     (:func:`same_structure` of ``base`` and ``KilnResidual(kiln, base.n)``), judged on the
     kiln's inputs: the same species fed and flowing in, the same fields but the boundary ones,
-    a burner's ash and dissociation the same."""
+    a burner's ash the same, and a dissociation heat in both or in neither (each case's own:
+    :class:`~rotarykiln.kiln.gas_mixture.CaseMixtures`)."""
     kb = base.kiln
     if _positive(kb.feed.flows) != _positive(kiln.feed.flows):
         return False
@@ -841,8 +845,8 @@ def _from_neighbour(residuals, i, solved, out, caught, opts):
     return result
 
 
-#: Cases of a chunk solved first, from the nearest case solved before (its Jacobian's LU
-#: kept), so that the others start from a near one: the square root of the chunk's size.
+#: The second wave of a chunk (:func:`_solve_group`): one case in LEVEL2 of those left after
+#: its seeds, spread over the inputs, solved before the rest so that these start nearer.
 LEVEL2 = 4
 
 
