@@ -170,6 +170,11 @@ def _polished(res: KilnResidual, x: np.ndarray, total: int, kw: dict):
     norm = float(np.max(np.abs(res.evaluate(x)))) / res.q_ref
     if norm <= kw["tol"]:
         return x, total
+    # a root unknown that crossed zero holds the same flow (its square) on the branch where
+    # its Jacobian column has the other sign: polished on the positive one
+    roots = res.i_species + np.flatnonzero(res.sqrt_mask)
+    x = x.copy()
+    x[:, roots] = np.abs(x[:, roots])
     F = BatchResidual([res])
     x_p, its, _, ok = newton_batch(F, x[None], F.q_ref, broyden=BROYDEN_UPDATES, **kw)
     if not ok[0]:
