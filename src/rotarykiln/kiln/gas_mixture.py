@@ -271,6 +271,48 @@ class GasMixture:
         num /= np.where(den > 0, den, 1.0)
         return k, num
 
+    def transport_tables(self, x) -> tuple[list[np.ndarray], int]:
+        """The conductivity and viscosity of gases of fixed compositions as their own piecewise
+        polynomials: the species' pieces mixed once by the mole fractions ``x`` (-, ``(L,
+        n)``, one composition a row), by the rules of :meth:`transport_x`. Returns the
+        coefficients of each power (``(pieces * L, 2)``: row ``i L + r`` is piece ``i`` of
+        composition ``r``; conductivity and viscosity side by side) and ``L``
+        (:meth:`transport_fixed` evaluates them)."""
+        n = len(self.names)
+        _, _, tr, _, _, weights = self._fits
+        x = np.asarray(x, dtype=float).reshape(-1, n)
+        ak, am = x * weights[0], x * weights[1]
+        ak = ak / np.where((sk := ak.sum(-1, keepdims=True)) > 0, sk, 1.0)
+        am = am / np.where((sm := am.sum(-1, keepdims=True)) > 0, sm, 1.0)
+        coef = [np.stack([c[:, :n] @ ak.T, c[:, n:] @ am.T], -1).reshape(-1, 2) for c in tr._coef]
+        return coef, x.shape[0]
+
+    def cp_tables(self, y) -> tuple[list[np.ndarray], int]:
+        """The specific heat of gases of fixed compositions as their own piecewise polynomials:
+        the species' pieces mixed once by the mass fractions ``y`` (-, ``(L, n)``), as
+        :meth:`transport_tables` (one column)."""
+        y = np.asarray(y, dtype=float).reshape(-1, len(self.names))
+        return [(c @ y.T).reshape(-1, 1) for c in self._fits[0]._coef], y.shape[0]
+
+    def fixed_value(self, T, tables, rows=None) -> np.ndarray:
+        """The properties of :meth:`transport_tables` or :meth:`cp_tables` at ``T`` (K), for
+        the compositions ``rows`` (int array broadcasting with ``T``; None: the one
+        composition): shape ``T.shape + (columns,)``."""
+        coef, L = tables
+        i, s = self._interval(np.asarray(T, dtype=float))
+        return _horner(coef, i if rows is None else i * L + rows, s)
+
+    def transport_fixed(self, T, tables, rows=None, *, viscosity=True):
+        """:meth:`transport_x` of gases of fixed compositions from their :meth:`transport_tables`
+        ``tables``: at ``T`` (K), composition ``rows`` (int array broadcasting with ``T``;
+        None: the one composition). The same mixing rules, the species summed before the
+        powers of T instead of after (the same values to round-off), two columns evaluated
+        instead of two per species."""
+        out = self.fixed_value(T, tables, rows)
+        if not viscosity:
+            return out[..., 0]
+        return out[..., 0], out[..., 1]
+
     def mean_molar_mass(self, mass) -> np.ndarray:
         """Mean molar mass, kg/mol, from mass flows or fractions on the last axis."""
         m = np.maximum(np.asarray(mass, dtype=float), 0.0)
@@ -413,20 +455,11 @@ class _CasesMixture:
         lead = self._cases.reshape((-1,) + (1,) * (T.ndim - 1))
         return T, i + lead * self._stack.pieces, s, lead
 
-    @staticmethod
-    def _horner(coef, i, s):
-        s = s[..., None]
-        out = coef[0].take(i, axis=0)
-        for c in coef[1:]:
-            out *= s
-            out += c.take(i, axis=0)
-        return out
-
     def species_enthalpy(self, T) -> np.ndarray:
         """Each case's :meth:`GasMixture.species_enthalpy` at its temperatures ``T`` (leading
         axis: the cases), J/kg."""
         T, i, s, lead = self._located(T)
-        out = self._horner(self._stack._h, i, s)
+        out = _horner(self._stack._h, i, s)
         if not (T.size and T_MIN <= T.min() and T.max() <= T_MAX):
             out += self._stack._cp_lo[lead] * np.minimum(T - T_MIN, 0.0)[..., None]
             out += self._stack._cp_hi[lead] * np.maximum(T - T_MAX, 0.0)[..., None]
@@ -436,7 +469,18 @@ class _CasesMixture:
         """Each case's :meth:`GasMixture.species_cp` at ``T`` (leading axis: the cases),
         J/(kg K)."""
         _, i, s, _ = self._located(T)
-        return self._horner(self._stack._cp, i, s)
+        return _horner(self._stack._cp, i, s)
+
+
+def _horner(coef, i, s):
+    """Stacked piecewise polynomials at pieces ``i`` and local variables ``s``: ``coef`` the
+    coefficients of each power, highest first (pieces on the first axis, columns after)."""
+    s = s[..., None]
+    out = coef[0].take(i, axis=0)
+    for c in coef[1:]:
+        out *= s
+        out += c.take(i, axis=0)
+    return out
 
 
 @dataclass(frozen=True)
@@ -470,12 +514,44 @@ class MixtureGas:
         """Mole fractions of the cells (computed once per state)."""
         return self.mixture.mole_fractions(self.flows)
 
+    @cached_property
+    def _fixed(self):
+        """The transport tables of the gas when every cell carries one composition (its
+        flows given once, on a cell axis of 1, as the kiln's residual does without gas
+        species): ``(tables, rows)`` (:meth:`GasMixture.transport_tables`; rows None when every
+        leading index holds the same composition), or None."""
+        x = self._x
+        if x.ndim < 2 or x.shape[-2] != 1:
+            return None
+        rows = x.reshape(-1, x.shape[-1])
+        if (rows == rows[:1]).all():
+            return self.mixture.transport_tables(rows[:1]), None
+        index = np.arange(rows.shape[0]).reshape(x.shape[:-2] + (1,))
+        return self.mixture.transport_tables(rows), index
+
+    @cached_property
+    def _fixed_cp(self):
+        """The specific heat tables of a gas of one composition in every cell (as
+        :attr:`_fixed`; a mixture of its own only: the cases of a batch with their own
+        dissociation heats mix theirs per case), or None."""
+        if self._fixed is None or not isinstance(self.mixture, GasMixture):
+            return None
+        y = self.flows / self.total[..., None]
+        rows = y.reshape(-1, y.shape[-1])
+        if self._fixed[1] is None:
+            return self.mixture.cp_tables(rows[:1]), None
+        return self.mixture.cp_tables(rows), self._fixed[1]
+
     def transport(self, T):
         """Conductivity (W/(m K)) and viscosity (Pa s) of the cells at ``T`` (K)."""
+        if self._fixed is not None:
+            return self.mixture.transport_fixed(T, *self._fixed)
         return self.mixture.transport_x(T, self._x)
 
     def conductivity(self, T):
         """Conductivity of the cells at ``T`` (K), W/(m K)."""
+        if self._fixed is not None:
+            return self.mixture.transport_fixed(T, *self._fixed, viscosity=False)
         return self.mixture.transport_x(T, self._x, viscosity=False)
 
     def density(self, T):
@@ -484,6 +560,8 @@ class MixtureGas:
 
     def cp(self, T):
         """Specific heat of the cells at ``T`` (K), J/(kg K)."""
+        if self._fixed_cp is not None:
+            return self.mixture.fixed_value(T, *self._fixed_cp)[..., 0]
         return np.einsum("...i,...i->...", self.mixture.species_cp(T), self.flows) / self.total
 
     def partial_pressures(self):

@@ -528,7 +528,13 @@ class KilnResidual:
         tb = 0.5 * (tbn[..., :-1] + tbn[..., 1:])
         tl = np.maximum(x[..., 2 : 2 + self.n_wall], T_FLOOR)  # inner wall (.. shell)
         tw = tl[..., 0]
-        g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
+        if self.ng:
+            g_mean = 0.5 * (np.maximum(qg[..., :-1, :], 0.0) + np.maximum(qg[..., 1:, :], 0.0))
+        else:
+            # no gas species solved for: every cell carries the inlet gas, whose composition
+            # (mole fractions, partial pressures, the emissivity's grey gases) is then worked
+            # out once and broadcast over the cells (the same numbers as cell by cell)
+            g_mean = np.maximum(qg[..., :1, :], 0.0)
         geo = self.geometry(x)
         gas = self.gas_state(g_mean, geo)
         exchange = self.exchange_of(geo, u.omega)
