@@ -34,6 +34,9 @@ def test_one_composition_in_every_cell_is_mixed_once_to_round_off(names):
     np.testing.assert_allclose(gas.conductivity(T), ref[2], rtol=1e-13)
     np.testing.assert_allclose(gas.cp(T), ref[3], rtol=1e-13)
     assert k.shape == mu.shape == gas.cp(T).shape == T.shape
+    # the enthalpy flow, below T_MIN and above T_MAX on the tables' linear extensions
+    h = (gas.flows * mixture.species_enthalpy(T)).sum(-1)
+    np.testing.assert_allclose(gas.enthalpy_flow(T), h, rtol=1e-12, atol=1e-9 * np.abs(h).max())
 
 
 def test_a_batch_of_cases_each_with_its_own_composition():
@@ -49,6 +52,19 @@ def test_a_batch_of_cases_each_with_its_own_composition():
     np.testing.assert_allclose(k, ref[0], rtol=1e-13)
     np.testing.assert_allclose(mu, ref[1], rtol=1e-13)
     np.testing.assert_allclose(gas.cp(T), ref[3], rtol=1e-13)
+    h = (gas.flows * mixture.species_enthalpy(T)).sum(-1)
+    np.testing.assert_allclose(gas.enthalpy_flow(T), h, rtol=1e-12, atol=1e-9 * np.abs(h).max())
+
+
+def test_the_tables_of_a_composition_are_made_once_and_the_kept_ones_bounded():
+    from rotarykiln.kiln import gas_mixture
+
+    mixture = GasMixture.of(NAMES)
+    x = np.array([[0.7, 0.1, 0.1, 0.08, 0.02]])
+    assert mixture.transport_tables(x) is mixture.transport_tables(x.copy())
+    for i in range(2 * gas_mixture.FIXED_TABLES_KEPT):
+        mixture.cp_tables(x * (1.0 + i))
+    assert len(mixture._fixed_cache) <= gas_mixture.FIXED_TABLES_KEPT
 
 
 def test_cells_of_their_own_compositions_are_mixed_cell_by_cell():

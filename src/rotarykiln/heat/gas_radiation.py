@@ -221,19 +221,18 @@ def johansson_wsgg_emissivity(temperature, p_h2o, p_co2, path_length, *, check=T
     tr = T / 1200.0
     pl = ptot * np.asarray(path_length, dtype=float)
     shape = np.broadcast(T, pl, mr).shape
-    # the four grey gases on a leading axis (the same operations per element as gas by gas)
-    grey = (4,) + (1,) * len(shape)
-    k = _JOHANSSON_K_ARRAY.reshape((4, 2) + (1,) * len(shape))
-    c = _JOHANSSON_C_ARRAY.reshape((4, 3, 3) + (1,) * len(shape))
+    # the four grey gases on a leading axis; their weights' powers of T/1200 summed over the
+    # gases first (sum_j (sum_i c_ij (1 - e^-k_i pL)) tr^j: the composition's part worked out
+    # once where the composition is one for all temperatures)
+    dims = (1,) * max(np.ndim(pl), np.ndim(mr))
+    k = _JOHANSSON_K_ARRAY.reshape((4, 2) + dims)
+    c = _JOHANSSON_C_ARRAY.reshape((4, 3, 3) + dims)
     kappa = k[:, 0] + k[:, 1] * mr
-    mr2 = mr**2
-    coeff = c[:, 0] + c[:, 1] * mr + c[:, 2] * mr2  # (4, j, ...)
-    a = coeff[:, 0] + coeff[:, 1] * tr + coeff[:, 2] * tr**2
-    terms = np.broadcast_to(a * (1.0 - np.exp(-kappa * pl)), grey[:1] + shape)
-    eps = terms[0] + terms[1]
-    eps += terms[2]
-    eps += terms[3]
-    return eps
+    coeff = c[:, 0] + c[:, 1] * mr + c[:, 2] * mr**2  # (4, j, ...)
+    b = (coeff * (1.0 - np.exp(-kappa * pl))[:, None]).sum(0)  # (j, ...)
+    eps = b[0] + b[1] * tr
+    eps += b[2] * tr**2
+    return eps if eps.shape == shape else np.array(np.broadcast_to(eps, shape))
 
 
 def gorog_mean_beam_length(diameter, bed_depth):

@@ -125,6 +125,11 @@ def _fit_on_grid(thermo):
     return fit_pieces(thermo, T_GRID)
 
 
+#: Tables of fixed gas compositions a mixture keeps (GasMixture.transport_tables and its
+#: kind): more are made anew (a study's cases each have theirs; a solve asks for one).
+FIXED_TABLES_KEPT = 64
+
+
 @dataclass(frozen=True)
 class GasMixture:
     """Property model of a gas made of ``names`` (chemistry gas species), mixed by composition.
@@ -279,20 +284,64 @@ class GasMixture:
         composition ``r``; conductivity and viscosity side by side) and ``L``
         (:meth:`transport_fixed` evaluates them)."""
         n = len(self.names)
-        _, _, tr, _, _, weights = self._fits
         x = np.asarray(x, dtype=float).reshape(-1, n)
+        key = ("transport", x.tobytes())
+        if (hit := self._fixed_cache.get(key)) is not None:
+            return hit
+        _, _, tr, _, _, weights = self._fits
         ak, am = x * weights[0], x * weights[1]
         ak = ak / np.where((sk := ak.sum(-1, keepdims=True)) > 0, sk, 1.0)
         am = am / np.where((sm := am.sum(-1, keepdims=True)) > 0, sm, 1.0)
         coef = [np.stack([c[:, :n] @ ak.T, c[:, n:] @ am.T], -1).reshape(-1, 2) for c in tr._coef]
-        return coef, x.shape[0]
+        return self._cached(key, (coef, x.shape[0]))
+
+    @property
+    def _fixed_cache(self) -> dict:
+        """The tables of fixed compositions made so far (a solve asks for its inlet gas's at
+        every residual call)."""
+        return self.__dict__.setdefault("_fixed_tables", {})
+
+    def _cached(self, key, value):
+        cache = self._fixed_cache
+        if len(cache) >= FIXED_TABLES_KEPT:
+            cache.clear()
+        cache[key] = value
+        return value
 
     def cp_tables(self, y) -> tuple[list[np.ndarray], int]:
         """The specific heat of gases of fixed compositions as their own piecewise polynomials:
         the species' pieces mixed once by the mass fractions ``y`` (-, ``(L, n)``), as
         :meth:`transport_tables` (one column)."""
         y = np.asarray(y, dtype=float).reshape(-1, len(self.names))
-        return [(c @ y.T).reshape(-1, 1) for c in self._fits[0]._coef], y.shape[0]
+        key = ("cp", y.tobytes())
+        if (hit := self._fixed_cache.get(key)) is not None:
+            return hit
+        return self._cached(key, ([(c @ y.T).reshape(-1, 1) for c in self._fits[0]._coef], len(y)))
+
+    def enthalpy_tables(self, q) -> tuple[list[np.ndarray], int, np.ndarray, np.ndarray]:
+        """The sensible enthalpy flow of gases of fixed species flows ``q`` (kg/s, ``(L, n)``)
+        as piecewise polynomials (W), as :meth:`cp_tables`, with the slopes of its linear
+        extensions below T_MIN and above T_MAX (W/K, ``(L,)`` each)."""
+        q = np.asarray(q, dtype=float).reshape(-1, len(self.names))
+        key = ("h", q.tobytes())
+        if (hit := self._fixed_cache.get(key)) is not None:
+            return hit
+        _, h, _, cp_lo, cp_hi, _ = self._fits
+        coef = [(c @ q.T).reshape(-1, 1) for c in h._coef]
+        return self._cached(key, (coef, q.shape[0], q @ cp_lo, q @ cp_hi))
+
+    def fixed_enthalpy(self, T, tables, rows=None) -> np.ndarray:
+        """The enthalpy flows of :meth:`enthalpy_tables` at ``T`` (K; compositions ``rows`` as
+        :meth:`fixed_value`), W: :math:`\\sum_k \\dot m_k h_k(T)` of
+        :meth:`species_enthalpy`, to round-off."""
+        T = np.asarray(T, dtype=float)
+        coef, L, lo, hi = tables
+        out = self.fixed_value(T, (coef, L), rows)[..., 0]
+        if not (T.size and T_MIN <= T.min() and T.max() <= T_MAX):
+            slope_lo, slope_hi = (lo[0], hi[0]) if rows is None else (lo[rows], hi[rows])
+            out += slope_lo * np.minimum(T - T_MIN, 0.0)
+            out += slope_hi * np.maximum(T - T_MAX, 0.0)
+        return out
 
     def fixed_value(self, T, tables, rows=None) -> np.ndarray:
         """The properties of :meth:`transport_tables` or :meth:`cp_tables` at ``T`` (K), for
@@ -557,6 +606,17 @@ class MixtureGas:
     def density(self, T):
         """Density of the cells at ``T`` (K), kg/m3 (ideal gas)."""
         return self.pressure * self.mixture.mean_molar_mass(self.flows) / (R_UNIVERSAL * T)
+
+    def enthalpy_flow(self, T):
+        """The sensible enthalpy flow (W) of each cell's gas flows at ``T`` (K): for a gas of
+        one composition from its flows' own tables (:meth:`GasMixture.enthalpy_tables`),
+        else :math:`\\sum_k \\dot m_k h_k(T)` species by species."""
+        if self._fixed_cp is not None:
+            q = self.flows.reshape(-1, self.flows.shape[-1])
+            rows = self._fixed[1]
+            tables = self.mixture.enthalpy_tables(q[:1] if rows is None else q)
+            return self.mixture.fixed_enthalpy(T, tables, rows)
+        return (self.flows * self.mixture.species_enthalpy(T)).sum(-1)
 
     def cp(self, T):
         """Specific heat of the cells at ``T`` (K), J/(kg K)."""

@@ -588,7 +588,9 @@ class KilnResidual:
             w_bed = w_gas = 0.0
             if heat_capacity_step is None:
                 hb_nodes = self.bed_enthalpy(tbn)
-                hg_nodes = self.mixture.species_enthalpy(tgn)
+                # a gas of one composition: its enthalpy flow from its own tables
+                Hg = gas.enthalpy_flow(tgn) if not self.ng else None
+                hg_nodes = None if Hg is not None else self.mixture.species_enthalpy(tgn)
             else:
                 hb_both = self.bed_enthalpy(np.concatenate([tbn, *cp_bed], -1))
                 hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, *cp_gas], -1))
@@ -598,7 +600,8 @@ class KilnResidual:
         if self.kiln.firing.heat_release > 0:
             s_gas = s_gas + release
         Hb = (qb * hb_nodes).sum(-1)
-        Hg = (qg * hg_nodes).sum(-1)
+        if hg_nodes is not None:
+            Hg = (qg * hg_nodes).sum(-1)
         r_bed = Hb[..., 1:] - Hb[..., :-1] - dz * (q_bed_in + s_bed)
         disp_species = None
         if self.kiln.bed.dispersion > 0:
