@@ -321,11 +321,11 @@ class BatchResidual:
             flags[:], found = self.closures_may_warn(xs, fl, faces[3], inputs, cases)
             if shared is not None:
                 shared[:] = found
-        out = []
-        for b in range(len(cases)):
-            flux = {k: np.broadcast_to(v, R.shape[:2] + (n,))[b] for k, v in fl.items()}
-            out.append((R[b], flux, prod[b], rate[b], tuple(f[b] for f in faces)))
-        return out
+        wide = {k: np.broadcast_to(v, R.shape[:2] + (n,)) for k, v in fl.items()}
+        return [
+            (R[b], {k: v[b] for k, v in wide.items()}, prod[b], rate[b], tuple(f[b] for f in faces))
+            for b in range(len(cases))
+        ]
 
     def closures_may_warn(self, xs, fl, qg, inputs, cases) -> tuple[np.ndarray, list]:
         """Whether each case's closures may be outside their validated ranges (bool per case),

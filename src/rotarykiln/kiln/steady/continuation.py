@@ -365,10 +365,10 @@ def newton_sequenced(
 def check_finite(profiles: dict, per_cell: dict, z, iterations: int) -> None:
     """Raise :class:`ConvergenceError` if a profile or a per-cell array is not finite."""
     for name, arr in profiles.items():
-        if not np.all(np.isfinite(arr)):
+        if not np.isfinite(arr).all():
             raise ConvergenceError(f"non-finite {name} in the solution", iterations=iterations)
     for key, arr in per_cell.items():
-        if not np.all(np.isfinite(arr)):
+        if not np.isfinite(arr).all():
             j = int(np.argmax(~np.isfinite(arr)))
             raise ConvergenceError(
                 f"non-finite {key} in cell {j} (z = {z[j]:.4g} m)", iterations=iterations

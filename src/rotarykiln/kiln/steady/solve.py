@@ -342,7 +342,7 @@ def finish_solution(
     R, fl, prod, rate, (tb_n, tg_n, qb, qg) = evaluated
     R, prod, rate = R[0], prod[0], rate[0]
     tb_n, tg_n, qb, qg = tb_n[0], tg_n[0], qb[0], qg[0]
-    fl = {key: np.broadcast_to(v, (1, res.n))[0].astype(float) for key, v in fl.items()}
+    fl = {key: _per_cell(v, res.n) for key, v in fl.items()}
     steady.check_finite(
         {"T_bed": tb_n, "T_gas": tg_n, "T_wall": x[:, 2:i0], "flows": qb}, fl, res.z, total
     )
@@ -426,6 +426,15 @@ def finish_solution(
         fill_profile=res.geometry(x).fill * np.ones(res.n),
         exhaust=exhaust,
     )
+
+
+def _per_cell(value, n: int) -> np.ndarray:
+    """A per-cell quantity of one case's evaluation (shape ``(1, n)``, ``(n,)`` or one
+    value for every cell) as a new float array of ``n`` values."""
+    a = np.asarray(value, dtype=float)
+    out = np.empty(n)
+    out[...] = a.reshape(a.shape[-1:]) if a.ndim else a
+    return out
 
 
 def _consumed_at_first_order(kiln: Kiln, species) -> np.ndarray:
