@@ -115,3 +115,18 @@ def test_a_kiln_from_the_caches_equals_one_built_afresh(name, changes):
 def test_caches_are_bounded():
     for cache in CACHES:
         assert cache.cache_info().maxsize is not None
+
+
+def test_a_sections_content_key_is_worked_out_once_and_the_kept_ones_bounded():
+    from rotarykiln.case import LiningLayer
+
+    layer = LiningLayer(material="fireclay_brick", thickness="0.1 m")
+    twin = LiningLayer(material="fireclay_brick", thickness="0.1 m")
+    other = LiningLayer(material="fireclay_brick", thickness="0.2 m")
+    key = from_case._content_key(layer)
+    assert from_case._content_key(layer) is key  # the same section: its key kept
+    assert from_case._content_key(twin) == key and from_case._content_key(other) != key
+    for i in range(2 * from_case.KEYS_KEPT):
+        from_case._content_key(LiningLayer(material="fireclay_brick", thickness=f"{i + 1} mm"))
+    assert len(from_case._KEYS) <= from_case.KEYS_KEPT
+    assert from_case._content_key(layer) == key
