@@ -183,3 +183,19 @@ def test_molar_volume():
         molar_volume(-1.0)
     with pytest.raises(InputError, match="p: "):
         molar_volume(300.0, math.nan)
+
+
+@pytest.mark.parametrize(
+    "unit", ["kg/h", "g/s", "t/h", "mol/s", "kmol/h", "Nm3/h", "NL/s", "Sm3/h", "scfm", "L/min"]
+)
+def test_a_flow_unit_read_once_converts_its_next_texts_as_pint_does(unit, monkeypatch):
+    """A study's sampled flows are new texts with a known unit: converted by that unit's
+    factor, to the same floats as pint's conversion of the whole text."""
+    from rotarykiln import units
+
+    ref_t = 298.15 if unit == "L/min" else None
+    texts = [f"{v:.9g} {unit}" for v in np.random.default_rng(1).uniform(1e-3, 3000.0, 200)]
+    fast = [units._gas_flow(t, "f", reference_temperature=ref_t) for t in texts]
+    monkeypatch.setattr(units, "_flow_unit", lambda pint_unit: None)  # through pint each time
+    slow = [units._gas_flow(t, "f", reference_temperature=ref_t) for t in texts]
+    assert fast == slow

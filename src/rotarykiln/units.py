@@ -714,6 +714,29 @@ def _cached_gas_flow(value, reference_temperature, reference_pressure, allow_zer
     )
 
 
+#: The SI unit of each kind of gas flow (:func:`_flow_unit`).
+_FLOW_KINDS = (("mass", "kg/s"), ("molar", "mol/s"), ("volume", "m**3/s"))
+
+
+@lru_cache(maxsize=256)
+def _flow_unit(pint_unit: str) -> tuple[str, tuple[float, float]] | None:
+    """The kind of a gas flow unit (``"mass"``, ``"molar"``, ``"volume"``) and its
+    :func:`linear_conversion` to kg/s, mol/s or m3/s, from pint's conversions of 0 and 1 of
+    it; None for a unit pint does not know, or of another dimension (its texts then go through
+    pint, which words the refusal)."""
+    try:
+        zero, one = ureg.Quantity(0.0, pint_unit), ureg.Quantity(1.0, pint_unit)
+        for kind, si in _FLOW_KINDS:
+            if one.dimensionality == _dimensionality(si):
+                conversion = linear_conversion(
+                    float(zero.to(si).magnitude), float(one.to(si).magnitude)
+                )
+                return None if conversion is None else (kind, conversion)
+    except Exception:  # pint raises many types for garbage
+        return None
+    return None
+
+
 def _gas_flow(
     value,
     field: str,
@@ -801,31 +824,39 @@ def _gas_flow(
             message=f'{field}: "{text}" is not a number followed by a unit (no arithmetic), '
             f"expected {GAS_FLOW_ACCEPTED}",
         )
-    try:
-        q = ureg.Quantity(number, pint_unit)
-    except Exception:  # pint raises many types for garbage: report them all the same way
-        raise InputError(
-            field,
-            message=f'{field}: "{text}" has an unknown unit "{unit}", expected {GAS_FLOW_ACCEPTED}',
-        ) from None
-
-    dims = q.dimensionality
-    if dims == _dimensionality("kg/s"):
-        return GasFlow("mass", float(q.to("kg/s").magnitude))
-    if dims == _dimensionality("mol/s"):
-        return GasFlow("molar", float(q.to("mol/s").magnitude))
-    if dims != _dimensionality("m**3/s"):
-        if state:
+    known = _flow_unit(pint_unit)
+    if known is not None:  # a unit read before: its factor (the same float as pint's)
+        kind, conversion = known
+        if kind != "volume":
+            return GasFlow(kind, converted(number, conversion))
+        volume = converted(number, conversion)
+    else:
+        try:
+            q = ureg.Quantity(number, pint_unit)
+        except Exception:  # pint raises many types for garbage: report them all the same way
             raise InputError(
                 field,
-                message=f'{field}: "{text}" is not a normal or standard volume per time, '
-                f'expected e.g. "12 Nm3/h", "0.8 SL/s", "10 scfm"',
+                message=f'{field}: "{text}" has an unknown unit "{unit}", expected '
+                f"{GAS_FLOW_ACCEPTED}",
+            ) from None
+
+        dims = q.dimensionality
+        if dims == _dimensionality("kg/s"):
+            return GasFlow("mass", float(q.to("kg/s").magnitude))
+        if dims == _dimensionality("mol/s"):
+            return GasFlow("molar", float(q.to("mol/s").magnitude))
+        if dims != _dimensionality("m**3/s"):
+            if state:
+                raise InputError(
+                    field,
+                    message=f'{field}: "{text}" is not a normal or standard volume per time, '
+                    f'expected e.g. "12 Nm3/h", "0.8 SL/s", "10 scfm"',
+                )
+            raise InputError(
+                field,
+                message=f'{field}: "{text}" is {_describe(q)}, expected {GAS_FLOW_ACCEPTED}',
             )
-        raise InputError(
-            field,
-            message=f'{field}: "{text}" is {_describe(q)}, expected {GAS_FLOW_ACCEPTED}',
-        )
-    volume = float(q.to("m**3/s").magnitude)
+        volume = float(q.to("m**3/s").magnitude)
     if state is not None:
         own_t, own_p = {"N": NORMAL_STATE, "S": STANDARD_STATE, "scf": SCF_STATE}[state]
         for given, own, key, unit_si in (
