@@ -79,6 +79,27 @@ def test_a_stalling_solve_gives_up_after_its_stall_iterations_and_a_slow_one_goe
     assert failed.value.diagnostics["iterations"] == 4
 
 
+def test_a_continuation_steps_line_search_halves_fewer_times():
+    # no step lowers |x^2 + 1|'s minimum at x = 0: every halving of the line search is a
+    # residual evaluation; a continuation's step (stall given) stops at STALL_HALVINGS
+    from rotarykiln.kiln.steady import newton
+
+    calls = []
+
+    def F(x):
+        calls.append(np.ndim(x))
+        return x * x + 1.0
+
+    def plain_evaluations(**kw):
+        calls.clear()
+        with pytest.raises(ConvergenceError):
+            newton_banded(F, np.zeros((3, 1)), 1.0, temperature_vars=0, max_iter=1, **kw)
+        return sum(1 for d in calls if d == 2)
+
+    assert plain_evaluations() == 1 + newton.HALVINGS
+    assert plain_evaluations(stall=(8, 1e-2)) == 1 + newton.STALL_HALVINGS
+
+
 def test_failed_solve_still_raises():
     def F(x):
         return x * x + 1.0  # no real root

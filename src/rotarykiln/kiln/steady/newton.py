@@ -38,6 +38,13 @@ STAGNATION_FACTOR = 10.0
 #: A squared unknown (x = sqrt(q)) steps as q, by Newton in q, and keeps at least this
 #: fraction of its q when that step would cross zero.
 SQUARED_FLOOR = 1e-3
+#: The line search halves a step at most HALVINGS times (down to 2^-30 of it); with ``stall``
+#: (a continuation's intermediate step, given up when it does not converge fast) at most
+#: STALL_HALVINGS (2^-10): a step that needs less is too long and is halved by the
+#: continuation, and every halving costs a residual evaluation (the cement kiln's 8-cell start:
+#: 92 evaluations, 80 ms, mostly on steps that failed; 52 with this).
+HALVINGS = 30
+STALL_HALVINGS = 10
 #: A logged unknown's decrease is taken in its logarithm, x exp(dx/x), with dx/x not below
 #: this (exp(-600) ~ 1e-261: far below any flow a kiln carries, and no underflow).
 LOG_STEP_FLOOR = -600.0
@@ -347,7 +354,8 @@ def newton_banded(
     stall : (int, float), optional
         ``(k, f)``: give up after ``k`` iterations if the residual is not below ``f`` times
         where it started (a continuation step too long for Newton then costs ``k`` iterations,
-        not ``max_iter``; one that converges slowly still may).
+        not ``max_iter``; one that converges slowly still may); its line search halves a step
+        at most STALL_HALVINGS times.
     local : array of bool (nv,), optional
         Variables acting on their own cell's rows only (a wall's radial temperatures): one
         colour of the Jacobian each instead of three (the same Jacobian, fewer residual
@@ -421,7 +429,7 @@ def newton_banded(
         lam0 = lam
         for logs in (lg, None) if lg is not None else (None,):
             lam = lam0
-            for _ in range(30):
+            for _ in range(STALL_HALVINGS if stall is not None else HALVINGS):
                 xt = trial_point(x, dx, lam, sq, logs)
                 xt[:, :nt] = np.maximum(xt[:, :nt], lower)
                 Rt = F(xt)
