@@ -100,6 +100,26 @@ def test_a_continuation_steps_line_search_halves_fewer_times():
     assert plain_evaluations(stall=(8, 1e-2)) == 1 + newton.STALL_HALVINGS
 
 
+def test_a_continuation_step_asking_for_a_newton_step_of_1e6_k_is_given_up_at_once():
+    # a residual nearly flat in the temperature: Newton asks for -1e6 K, of which max_step
+    # (300 K) allows 3e-4 of the step; an ordinary solve takes it, a continuation's step
+    # (stall given) is too long and fails without a line search
+    calls = []
+
+    def F(x):
+        calls.append(np.ndim(x))
+        return 1e-6 * x + 1.0
+
+    kw = dict(temperature_vars=1, max_iter=1, lower=-1e12)
+    with pytest.raises(ConvergenceError):
+        newton_banded(F, np.zeros((3, 1)), 1.0, stall=(8, 1e-2), **kw)
+    assert sum(1 for d in calls if d == 2) == 1  # the start's residual only
+    calls.clear()
+    with pytest.raises(ConvergenceError):  # one iteration, not converged
+        newton_banded(F, np.zeros((3, 1)), 1.0, **kw)
+    assert sum(1 for d in calls if d == 2) == 2  # and its accepted 300 K step
+
+
 def test_failed_solve_still_raises():
     def F(x):
         return x * x + 1.0  # no real root

@@ -42,7 +42,8 @@ SQUARED_FLOOR = 1e-3
 #: (a continuation's intermediate step, given up when it does not converge fast) at most
 #: STALL_HALVINGS (2^-10): a step that needs less is too long and is halved by the
 #: continuation, and every halving costs a residual evaluation (the cement kiln's 8-cell start:
-#: 92 evaluations, 80 ms, mostly on steps that failed; 52 with this).
+#: 92 evaluations, 80 ms, mostly on steps that failed; 52 with this). Such a step whose Newton
+#: step would move a temperature by more than max_step 2^STALL_HALVINGS is given up at once.
 HALVINGS = 30
 STALL_HALVINGS = 10
 #: A logged unknown's decrease is taken in its logarithm, x exp(dx/x), with dx/x not below
@@ -425,6 +426,10 @@ def newton_banded(
             break
         big = np.max(np.abs(dx[:, :nt])) if nt else 0.0
         lam = min(1.0, max_step / big) if big > 0 else 1.0
+        if stall is not None and lam < 0.5**STALL_HALVINGS:
+            # a continuation's step whose Newton step moves a temperature by more than
+            # max_step 2^STALL_HALVINGS (3e5 K): too long a step, given up at once
+            break
         accepted = False
         lam0 = lam
         for logs in (lg, None) if lg is not None else (None,):
