@@ -588,9 +588,10 @@ class KilnResidual:
             w_bed = w_gas = 0.0
             if heat_capacity_step is None:
                 hb_nodes = self.bed_enthalpy(tbn)
-                # a gas of one composition: its enthalpy flow from its own tables
-                Hg = gas.enthalpy_flow(tgn) if not self.ng else None
-                hg_nodes = None if Hg is not None else self.mixture.species_enthalpy(tgn)
+                if self.ng:
+                    hg_nodes = self.mixture.species_enthalpy(tgn)
+                else:  # a gas of one composition: its enthalpy flow from its own tables
+                    hg_nodes, Hg = None, gas.enthalpy_flow(tgn)
             else:
                 hb_both = self.bed_enthalpy(np.concatenate([tbn, *cp_bed], -1))
                 hg_both = self.mixture.species_enthalpy(np.concatenate([tgn, *cp_gas], -1))

@@ -170,7 +170,11 @@ SEQUENCE_TOL = 1e-6
 #: A coarse cell holds a reaction front when a bed species flow falls across it by more than
 #: FRONT_RATIO times (from above FRONT_FLOOR of the species' largest flow);
 #: a stream's inlet cell holds a thermal front when its temperature changes across it by more
-#: than INLET_JUMP_RATIO times as much as across the next cell.
+#: than INLET_JUMP_RATIO times as much as across the next cell. Solver-path constants (they
+#: shape the fine grid's start, not the root it converges to): the first values tried, not
+#: compared with others; the cement kiln's fronts exceed them by orders of magnitude (its meal
+#: heated 80 times as much in the inlet cell of 40 as in the next, its Al2O3 falling 450 to
+#: 5000 times a cell on 200).
 FRONT_RATIO = 10.0
 FRONT_FLOOR = 1e-6
 INLET_JUMP_RATIO = 5.0
@@ -261,8 +265,7 @@ def interpolate_unknowns(src, x, dst) -> np.ndarray:
     counter = dst.gas_in_face == -1
     bed, gas = qb[:, list(dst.bed_pos)], qg[:, list(dst.gas_pos)]
     species_front = front_cells(bed)
-    none = np.zeros(src.n, dtype=bool)
-    bed_inlet, gas_inlet = none.copy(), none.copy()
+    bed_inlet, gas_inlet = np.zeros(src.n, dtype=bool), np.zeros(src.n, dtype=bool)
     bed_inlet[0] = inlet_front(tb[:3])
     gas_inlet[-1 if counter else 0] = inlet_front(tg[::-1][:3] if counter else tg[:3])
 
@@ -291,6 +294,17 @@ def _relaxed(F, x, scale, kw) -> np.ndarray:
     return newton.relax_local(
         F, x, scale, local, max_step=kw.get("max_step", 300.0), lower=kw.get("lower", 160.0)
     )
+
+
+def _newton_retried(F, x, scale, kw, retry_options):
+    """Newton on ``F`` from ``x`` with the options ``kw``, and if it fails once more with
+    ``retry_options`` over them (when given): ``(x, report)``, or None if both fail."""
+    for options in ({}, retry_options) if retry_options else ({},):
+        try:
+            return newton.newton_banded(F, x, scale, **dict(kw, **options))
+        except ConvergenceError:
+            pass
+    return None
 
 
 def newton_sequenced(
@@ -341,24 +355,17 @@ def newton_sequenced(
                     )[0]
                 except ConvergenceError:
                     return None
-            for options in ({}, retry_options) if retry_options else ({},):
-                try:
-                    return newton.newton_banded(R, x_start, scale, **dict(coarse_kw, **options))[0]
-                except ConvergenceError:
-                    pass
-            return None
+            done = _newton_retried(R, x_start, scale, coarse_kw, retry_options)
+            return None if done is None else done[0]
 
         C = make_residual(max(F.n // ratio, 4))
         log.info("grid sequencing: a start from %d cells for %d", C.n, F.n)
         xc = solved(C, interpolate_unknowns(F, np.asarray(x0, dtype=float), C))
         if xc is not None:
             start = _relaxed(F, interpolate_unknowns(C, xc, F), scale, kw)
-            for options in ({}, retry_options) if retry_options else ({},):
-                try:
-                    x, rep = newton.newton_banded(F, start, scale, **dict(kw, **options))
-                    return x, rep.iterations
-                except ConvergenceError:
-                    pass
+            done = _newton_retried(F, start, scale, kw, retry_options)
+            if done is not None:
+                return done[0], done[1].iterations
     return newton_with_continuation(F, x0, scale, continuation, **kw)
 
 
