@@ -40,7 +40,12 @@ from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import BoundaryInputs
 from rotarykiln.kiln.residual import KilnResidual
 from rotarykiln.kiln.results.solution import KilnSolution
-from rotarykiln.kiln.steady.newton import SQUARED_FLOOR, STAGNATION_FACTOR, coloured_pattern
+from rotarykiln.kiln.steady.newton import (
+    SQUARED_FLOOR,
+    STAGNATION_FACTOR,
+    coloured_pattern,
+    positive_roots,
+)
 from rotarykiln.kiln.steady.solve import finish_solution, newton_options, solve_kiln
 
 log = logging.getLogger(__name__)
@@ -506,6 +511,7 @@ def newton_batch(
     squared=None,
     rel_step: float = 1e-7,
     local=None,
+    roots=None,
     start_factors=None,
     factors_out: list | None = None,
     broyden: int = 0,
@@ -535,6 +541,9 @@ def newton_batch(
     local : array of bool (nv,), optional
         Unknowns acting on their own cell's rows only (:func:`local_unknowns`): one colour
         each instead of three.
+    roots : array of bool (nv,), optional
+        Root unknowns kept on their positive branch, as
+        :func:`~rotarykiln.kiln.steady.newton.newton_banded`'s.
     start_factors : optional
         LU factors of a Jacobian every case starts with (a neighbouring solution's), instead
         of evaluating its own at its start; or a list of them, one per case.
@@ -579,6 +588,7 @@ def newton_batch(
     B, n, nv = x.shape
     nt = nv if temperature_vars is None else temperature_vars
     sq = None if squared is None or not np.any(squared) else np.flatnonzero(squared)
+    rt = positive_roots(x, roots)
     jkw = dict(local=local, step_floor=step_floor, rel_step=rel_step)
     bw = 2 * nv - 1
     every = np.arange(B)
@@ -637,6 +647,7 @@ def newton_batch(
                 q = np.maximum(s * s + lm * 2.0 * s * dx[s_][:, :, sq], SQUARED_FLOOR * s * s)
                 xt[:, :, sq] = np.copysign(np.sqrt(q), s)
             xt[:, :, :nt] = np.maximum(xt[:, :, :nt], lower)
+            positive_roots(xt, rt)
             Rt = F(xt[:, None], act[s_])[:, 0]
             tn = np.max(np.abs(Rt), axis=(1, 2)) / scale[act[s_]]
             xt_all[s_], Rt_all[s_], nt_norm[s_] = xt, Rt, tn

@@ -170,12 +170,7 @@ def _polished(res: KilnResidual, x: np.ndarray, total: int, kw: dict):
     norm = float(np.max(np.abs(res.evaluate(x)))) / res.q_ref
     if norm <= kw["tol"]:
         return x, total
-    # a root unknown that crossed zero holds the same flow (its square) on the branch where
-    # its Jacobian column has the other sign: polished on the positive one
-    roots = res.i_species + np.flatnonzero(res.sqrt_mask)
-    x = x.copy()
-    x[:, roots] = np.abs(x[:, roots])
-    F = BatchResidual([res])
+    F = BatchResidual([res])  # (its root unknowns on their positive branch: kw["roots"])
     x_p, its, _, ok = newton_batch(F, x[None], F.q_ref, broyden=BROYDEN_UPDATES, **kw)
     if not ok[0]:
         return x, total
@@ -298,8 +293,8 @@ def _every_root_squared(res: KilnResidual, squared: np.ndarray) -> dict | None:
 def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
     """The keyword options of :func:`~rotarykiln.kiln.steady.newton.newton_banded` for the
     residual ``res``: tolerance, iterations, which unknowns are temperatures, where each
-    unknown lies (for errors), the finite-difference step floors, the squared unknowns and
-    the local ones (one colour of the Jacobian each)."""
+    unknown lies (for errors), the finite-difference step floors, the squared unknowns, the
+    local ones (one colour of the Jacobian each) and the roots (kept positive)."""
     kiln, i0 = res.kiln, res.i_species
     species = [f"bed {s} flow" for s in res.bed_var] + [f"gas {s} flow" for s in res.gas_var]
     if res.depth is not None:
@@ -308,6 +303,8 @@ def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
     floor = np.concatenate([np.ones(i0), np.full(res.nv - i0, SPECIES_STEP_FLOOR)])
     squared = np.zeros(res.nv, dtype=bool)
     squared[i0 : i0 + res.nb] = res.sqrt_mask & _consumed_at_first_order(kiln, res.bed_var)
+    roots = np.zeros(res.nv, dtype=bool)
+    roots[i0 : i0 + res.nb] = res.sqrt_mask
     return dict(
         tol=tol,
         max_iter=max_iter,
@@ -316,6 +313,7 @@ def newton_options(res: KilnResidual, *, tol: float, max_iter: int) -> dict:
         step_floor=floor,
         squared=squared,
         local=res.local,
+        roots=roots,
     )
 
 
