@@ -218,6 +218,32 @@ def test_particles_model_reports_the_burnout_and_refuses_a_grind_that_does_not_b
     assert f"here {100.0 * x_o2:.2g} mol%" in str(refused.value)
 
 
+def test_particles_model_reports_where_its_heat_is_released():
+    # the distances within which 90 % and 99 % of the heat is released: where the
+    # cumulative release table crosses those shares; a coarser grind burns out further on
+    kiln, _ = kiln_from_case(_case(BURNERS["coal, particles"]))
+    flame = kiln.firing.flame
+    x, cumulative = (np.asarray(v) for v in flame.release_table)
+    summary = flame.summary()
+    for share in (0.9, 0.99):
+        d = summary[f"heat_released_{round(100 * share)}pct_m"]
+        assert d == flame.release_distance(share)
+        assert np.interp(d, x, cumulative) == pytest.approx(share, abs=1e-9)
+        assert 0.0 < d < x[-1]
+    assert flame.release_distance(0.9) < flame.release_distance(0.99)
+    coarser = dict(BURNERS["coal, particles"])
+    coarser["solid_fuels"] = [
+        dict(coarser["solid_fuels"][0], fineness={"x_prime": "150 um", "n": 1.1})
+    ]
+    kiln_c, _ = kiln_from_case(_case(coarser))
+    assert kiln_c.firing.flame.release_distance(0.99) > flame.release_distance(0.99)
+    with pytest.raises(InputError, match="share"):
+        flame.release_distance(1.5)
+    instant, _ = kiln_from_case(_case(BURNERS["lignite, instant"]))
+    assert instant.firing.flame.release_distance(0.9) is None
+    assert "heat_released_90pct_m" not in instant.firing.flame.summary()
+
+
 @pytest.mark.parametrize(
     "fuel, message",
     [

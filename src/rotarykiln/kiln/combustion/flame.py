@@ -107,6 +107,8 @@ __all__ = [
 
 #: How the fuel burns along the kiln (docs/flames.md).
 COMBUSTION_MODELS = ("instant", "burnout", "stirred", "particles")
+#: Shares of the fuel's heat whose release distance the particles model reports (summary).
+RELEASE_SHARES = (0.9, 0.99)
 #: Peclet number u x_w / D of a stirred recirculation zone: well mixed (D = 10 u x_w).
 STIRRED_PECLET = 0.1
 PRODUCT_MODELS = ("equilibrium", "complete")
@@ -359,6 +361,25 @@ class Flame:
             return ReleaseTable(*self.release_table, length, counter_current)
         return BurnoutProfile(length, float(self.flame_length), counter_current)
 
+    def release_distance(self, share: float) -> float | None:
+        """Distance from the burner (m) within which the share ``share`` (-, in (0, 1]) of the
+        fuel's heat is released, from the particles model's cumulative release
+        (``release_table``, linear between its points); None for the other models.
+
+        The length of a solid-fuel flame is read off this burn-out: 90 % and 99 % of the heat
+        are in the run summary (``heat_released_90pct_m``, ``heat_released_99pct_m``).
+        """
+        if self.release_table is None:
+            return None
+        if not 0.0 < share <= 1.0:
+            raise InputError("share", share, "a fraction in (0, 1]")
+        x, cumulative = (np.asarray(v, dtype=float) for v in self.release_table)
+        k = int(np.searchsorted(cumulative, share))  # first point at or past the share
+        if k == 0:
+            return float(x[0])
+        c0, c1 = cumulative[k - 1], cumulative[k]
+        return float(x[k - 1] + (x[k] - x[k - 1]) * (share - c0) / (c1 - c0))
+
     def summary(self) -> dict:
         """The burner's figures, SI units, for the run summary."""
         out = {
@@ -382,6 +403,9 @@ class Flame:
         ):
             if value is not None:
                 out[key] = value
+        if self.release_table is not None:
+            for share in RELEASE_SHARES:
+                out[f"heat_released_{round(100 * share)}pct_m"] = self.release_distance(share)
         if self.burner.fired:
             out["ash_to_bed_kg_s"] = self.ash_flow
             comp = dict(self.products.composition)
