@@ -168,15 +168,32 @@ def _banded_jacobian(F, x, R0, rel_step=1e-7, step_floor=1.0, local=None):
 
 
 def positive_roots(x: np.ndarray, roots) -> np.ndarray | None:
-    """The root unknowns ``roots`` (bool per variable, or their column indices) of ``x``
-    (..., nv) set to their absolute values in place (the same flows, ``s^2``); returns their
-    column indices (None without roots).
+    """The root unknowns ``roots`` of ``x`` set to their absolute values in place: the same
+    flows, :math:`q = s^2`, on the branch where a forward difference does not straddle zero
+    (:func:`newton_banded`, ``roots``).
+
+    Parameters
+    ----------
+    x : array (..., nv)
+        Unknowns (K for temperatures, - for scaled flows and their roots), changed in place.
+    roots : array of bool (nv,) or of int, or None
+        The root unknowns (-): a mask per variable or their column indices.
+
+    Returns
+    -------
+    array of int or None
+        The roots' column indices (-), None without roots.
 
     Examples
     --------
     >>> x = np.array([[300.0, -2e-9], [310.0, 1e-3]])
     >>> positive_roots(x, np.array([False, True])).tolist(), x[:, 1].tolist()
     ([1], [2e-09, 0.001])
+
+    References
+    ----------
+    P. Deuflhard, Newton Methods for Nonlinear Problems, Springer (2004), sec. 3.2 (Newton
+    steps in transformed variables).
     """
     if roots is None:
         return None
