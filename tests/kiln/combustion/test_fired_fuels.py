@@ -8,6 +8,7 @@ HFO]); and the kiln's own element and energy closures with several fuels and the
 bed.
 """
 
+import dataclasses
 import warnings
 
 import numpy as np
@@ -17,7 +18,7 @@ import yaml
 from rotarykiln.case import parse_case
 from rotarykiln.chemistry.solid_fuels import SolidFuel, complete_combustion, load_kiln_fuel
 from rotarykiln.errors import InputError
-from rotarykiln.kiln.combustion.fired_fuels import FiredFuel, burn_fired_fuels
+from rotarykiln.kiln.combustion.fired_fuels import FiredFuel, burn_fired_fuels, particle_release
 from rotarykiln.kiln.combustion.flame import AirStream, Burner, fire
 from rotarykiln.kiln.from_case import kiln_from_case
 from rotarykiln.kiln.residual import KilnResidual
@@ -179,6 +180,10 @@ BURNERS = {
 }
 
 
+#: The coal's particles burnt as their jet entrains the secondary air (a 12 mm nozzle).
+BURNERS["coal, particles, nozzle"] = dict(BURNERS["coal, particles"], nozzle_diameter="12 mm")
+
+
 @pytest.mark.parametrize("which", list(BURNERS))
 def test_kiln_fired_with_solid_and_liquid_fuels_closes_its_balances_with_the_ash_in_the_bed(
     which,
@@ -242,6 +247,52 @@ def test_particles_model_reports_where_its_heat_is_released():
     instant, _ = kiln_from_case(_case(BURNERS["lignite, instant"]))
     assert instant.firing.flame.release_distance(0.9) is None
     assert "heat_released_90pct_m" not in instant.firing.flame.summary()
+
+
+def test_a_nozzle_lengthens_the_particle_flame_to_the_air_its_jet_entrains():
+    # Thring-Newby / Ricou-Spalding by hand: the primary air carries the coal through the
+    # nozzle; the heat released by x is at most the share of the coal's O2 demand that the
+    # primary air and the secondary air entrained by x hold (flames.md section 2)
+    R, p_atm = 8.314462618, 101325.0
+    burner = BURNERS["coal, particles, nozzle"]
+    kiln, _ = kiln_from_case(_case(burner))
+    flame = kiln.firing.flame
+    m_air = 1.2925 / 3600.0  # kg/s per Nm3/h of air (0 degC, 1 atm)
+    prim, sec, coal = 10.0 * m_air, 35.0 * m_air, 4.2 / 3600.0
+    mm_air = 0.0289639
+    d0 = 0.012
+    u0 = prim / mm_air * R * 298.15 / p_atm / (np.pi * d0**2 / 4.0)
+    m0 = prim + coal
+    rho_a = p_atm * mm_air / (R * 298.15)
+    de = 2.0 * m0 / np.sqrt(np.pi * rho_a * m0 * u0)
+    assert flame.nozzle_velocity == pytest.approx(u0, rel=2e-3)
+    assert flame.equivalent_diameter == pytest.approx(de, rel=2e-3)
+    x_s = de * (m0 + sec) / (0.32 * m0)
+    assert flame.entrainment_length == pytest.approx(x_s, rel=2e-3)
+    x, cumulative = (np.asarray(v) for v in flame.release_table)
+    o2_need = flame.o2_demand
+    o2_p, o2_s = 0.2095 * prim / mm_air, 0.2095 * sec / mm_air
+    taken = np.clip((0.32 * x / de - 1.0) * m0 / sec, 0.0, 1.0)
+    share = np.minimum((o2_p + o2_s * taken) / o2_need, 1.0)
+    assert np.all(cumulative <= share * (1.0 + 1e-9) + 1e-12)
+    # a share of the heat is released where both the particles (burning alone, in mixed O2)
+    # and the jet's O2 have reached it: the later of the two distances
+    free = kiln_from_case(_case(BURNERS["coal, particles"]))[0].firing.flame
+    for q in (0.9, 0.99):
+        x_mix = de / 0.32 * (1.0 + (q * o2_need - o2_p) / o2_s * sec / m0)
+        expected = max(x_mix, free.release_distance(q))
+        assert flame.release_distance(q) == pytest.approx(expected, abs=x[1] - x[0])
+    # here the mixing sets the flame: 90 % of the heat 3 times further than the particles alone
+    assert flame.release_distance(0.9) > 3.0 * free.release_distance(0.9)
+    wider, _ = kiln_from_case(_case(dict(burner, nozzle_diameter="25 mm")))
+    assert wider.firing.flame.release_distance(0.9) > flame.release_distance(0.9)
+    summary = flame.summary()
+    assert summary["entrainment_length_m"] == flame.entrainment_length
+    # a jet that does not take in the O2 within the kiln leaves fuel unburnt: refused (here
+    # one entraining 160 times less than Ricou-Spalding's)
+    slow = dataclasses.replace(flame.burner, entrainment=0.002)
+    with pytest.raises(InputError, match=r"burner.nozzle_diameter.*entrains the O2"):
+        particle_release(dataclasses.replace(flame, burner=slow), 0.406, 5.5)
 
 
 @pytest.mark.parametrize(

@@ -52,6 +52,8 @@ __all__ = [
     "FUEL_STATES",
     "ProductsTable",
     "burn_fired_fuels",
+    "entrained_o2_share",
+    "fired_jet",
     "particle_release",
 ]
 
@@ -337,6 +339,11 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
     r"""Where the solid fuels release their heat: the burn-out of their particles along the
     kiln from the burner (module docstring, ``particles`` model).
 
+    With the burner's nozzle diameter given (:func:`fired_jet`), the heat released by
+    :math:`x` is at most the share of the fuels' O2 demand that the jet has entrained by then
+    (:func:`entrained_o2_share`): the flame is as long as the slower of the particles' burn-out
+    and the jet's mixing.
+
     The particles travel with the gas at the flame's adiabatic temperature :math:`T_{ad}`, at
     the mean velocity of the products in the kiln's section :math:`u = \dot m_p/(\rho(T_{ad})
     \pi D^2/4)`, in the products' O2 (:math:`p_{O_2} = x_{O_2} p`). The heat released up to
@@ -442,9 +449,161 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
             )
         xb = burnout_fraction(np.minimum(x / float(flame.flame_length), 1.0))
         released = released + (flame.heat_release - total) * xb
+    if flame.entrainment_length is not None and flame.o2_demand is not None:
+        # the jet burns its fuels no faster than it entrains the O2 they need
+        share = entrained_o2_share(flame.burner, _jet_of(flame), flame.o2_demand, x)
+        if share[-1] < 1.0:
+            raise InputError(
+                "burner.nozzle_diameter",
+                flame.burner.nozzle_diameter,
+                f"a jet that entrains the O2 its fuels need within the kiln's {kiln_length:g} m "
+                f"(it holds {100.0 * share[-1]:.3g} % of it there: a smaller nozzle, or more "
+                "primary air)",
+            )
+        released = np.minimum(released, released[-1] * share)
     cumulative = released / released[-1]
     table = (tuple(float(v) for v in x), tuple(float(v) for v in cumulative))
     return table, ends, tuple(float(v) for v in kappa)
+
+
+def fired_jet(burner, kiln_diameter: float) -> dict:
+    r"""Jet numbers of a burner firing solid or liquid fuels through a nozzle of diameter
+    :math:`d_0` (``burner.nozzle_diameter``): the primary air carries the fuels (nozzle fluid
+    :math:`\dot m_0` = primary air + fuels, at the primary air's velocity
+    :math:`u_0 = \dot V_p/(\pi d_0^2/4)` at its temperature, a gaseous fuel's volume added),
+    the Thring-Newby equivalent nozzle and Ricou-Spalding entrainment of the secondary air
+    :math:`\dot m_a` at density :math:`\rho_a`:
+
+    .. math:: d_e = \frac{2\dot m_0}{\sqrt{\pi\rho_a \dot G_0}},\quad
+              \dot G_0 = \dot m_0 u_0,\quad
+              x_s = \frac{d_e(\dot m_0 + \dot m_a)}{C_e \dot m_0},\quad
+              \theta = \Big(1 + \frac{\dot m_a}{\dot m_0}\Big)\frac{d_e}{D}
+
+    Parameters
+    ----------
+    burner : Burner
+        With ``nozzle_diameter`` (m), ``entrainment`` :math:`C_e` (-), its fired fuels (kg/s).
+    kiln_diameter : float
+        Free diameter D, m.
+
+    Returns
+    -------
+    dict
+        ``equivalent_diameter`` (m), ``nozzle_velocity`` (m/s), ``thring_newby`` (-),
+        ``entrainment_length`` (m), ``recirculating`` (bool, theta < 0.75), and the nozzle
+        fluid's mass flow ``nozzle_flow`` (kg/s).
+
+    Examples
+    --------
+    >>> from rotarykiln.chemistry.solid_fuels import load_kiln_fuel
+    >>> from rotarykiln.kiln.combustion.flame import AirStream, Burner
+    >>> coal = FiredFuel(load_kiln_fuel("pittsburgh_8"), 2.3, label="coal")
+    >>> b = Burner("CH4:1", 0.0, AirStream(1.84), AirStream(24.6, 1323.15), fired=(coal,),
+    ...            nozzle_diameter=0.3)
+    >>> j = fired_jet(b, 4.4)
+    >>> round(j["nozzle_velocity"], 1), round(j["equivalent_diameter"], 3)  # m/s, m
+    (22.0, 0.948)
+    >>> round(j["entrainment_length"], 1)  # m: all the secondary air in the jet
+    20.6
+
+    References
+    ----------
+    M.W. Thring, M.P. Newby, 4th Symp. Combust. (1953) 789; F.P. Ricou, D.B. Spalding, J.
+    Fluid Mech. 11 (1961) 21; flames.md section 2 of the project's reference notes.
+    """
+    from rotarykiln.materials.gas import R_UNIVERSAL
+
+    p, sec = burner.primary_air, burner.secondary_air
+    d0 = float(burner.nozzle_diameter)
+    fuels = sum(f.flow for f in burner.fired) + burner.fuel_flow
+    m0 = p.flow + fuels
+    volume = p.moles * R_UNIVERSAL * p.temperature / 101325.0  # m3/s of primary air
+    if burner.fuel_flow > 0:
+        from rotarykiln.materials.gas import molar_mass
+
+        moles = burner.fuel_flow / molar_mass(burner.fuel)
+        volume += moles * R_UNIVERSAL * burner.fuel_temperature / 101325.0
+    u0 = volume / (np.pi * d0**2 / 4.0)
+    if sec.flow > 0:
+        rho_a = 101325.0 * sec.molar_mass / (R_UNIVERSAL * sec.temperature)
+    else:
+        rho_a = 101325.0 * p.molar_mass / (R_UNIVERSAL * p.temperature)
+    de = 2.0 * m0 / np.sqrt(np.pi * rho_a * m0 * u0)
+    theta = (1.0 + sec.flow / m0) * de / kiln_diameter
+    x_s = de * (m0 + sec.flow) / (burner.entrainment * m0)
+    return dict(
+        equivalent_diameter=float(de),
+        nozzle_velocity=float(u0),
+        thring_newby=float(theta),
+        entrainment_length=float(x_s),
+        recirculating=bool(theta < 0.75),
+        nozzle_flow=float(m0),
+    )
+
+
+def entrained_o2_share(burner, jet: dict, o2_needed: float, x) -> np.ndarray:
+    r"""Share of the fuels' O2 demand that their jet holds at the distances ``x`` from the
+    burner: the primary air's O2 and that of the secondary air entrained so far,
+    Ricou-Spalding :math:`\dot m_j = C_e \dot m_0 x/d_e` (the jet's mass flow, its excess
+    over the nozzle fluid the secondary air taken in, all of it from :math:`x_s`):
+
+    .. math:: s(x) = \min\Big(1, \frac{\dot n_{O_2,p} + \dot n_{O_2,a}\,
+              \mathrm{clip}\big((C_e x/d_e - 1)\dot m_0/\dot m_a, 0, 1\big)}
+              {\dot n_{O_2,needed}}\Big)
+
+    The heat a fuel can release by :math:`x` is at most :math:`s(x)` of its heat (fast
+    chemistry in the jet, about the same heat per mol of O2 for every fuel: Thornton's rule).
+
+    Parameters
+    ----------
+    burner : Burner
+        Its primary and secondary air (and an air ingress at the burner end, counted with the
+        secondary air), and the entrainment constant :math:`C_e` (-).
+    jet : dict
+        :func:`fired_jet`'s numbers (``equivalent_diameter`` m, ``nozzle_flow`` kg/s).
+    o2_needed : float, mol/s
+        The fuels' O2 demand, mol/s.
+    x : array
+        Distances from the burner, m.
+
+    Returns
+    -------
+    array
+        The share (-) at ``x``, nondecreasing, at most 1.
+
+    Examples
+    --------
+    >>> from rotarykiln.kiln.combustion.flame import AirStream, Burner
+    >>> b = Burner("CH4:1", 0.001, AirStream(0.0015), AirStream(0.0165))
+    >>> jet = {"equivalent_diameter": 0.05, "nozzle_flow": 0.0025}
+    >>> need = 2 * 0.001 / 0.016043  # mol/s of O2 for CH4
+    >>> entrained_o2_share(b, jet, need, [0.0, 0.5, 2.0]).round(3).tolist()
+    [0.087, 0.406, 1.0]
+
+    References
+    ----------
+    F.P. Ricou, D.B. Spalding, J. Fluid Mech. 11 (1961) 21; flames.md section 2 (the
+    two-stream form); W.M. Thornton, Philos. Mag. 33 (1917) 196 (heat per O2 consumed).
+    """
+    p = burner.primary_air
+    around = [a for a in burner.flame_air if a is not p]
+    o2_p = p.moles * p.o2_fraction
+    o2_a = sum(a.moles * a.o2_fraction for a in around)
+    m_a = sum(a.flow for a in around)
+    m0, de = jet["nozzle_flow"], jet["equivalent_diameter"]
+    x = np.asarray(x, dtype=float)
+    if m_a > 0:
+        taken = np.clip((burner.entrainment * x / de - 1.0) * m0 / m_a, 0.0, 1.0)
+    else:
+        taken = np.zeros_like(x)
+    return np.minimum((o2_p + o2_a * taken) / o2_needed, 1.0)
+
+
+def _jet_of(flame) -> dict:
+    return dict(
+        equivalent_diameter=flame.equivalent_diameter,
+        nozzle_flow=flame.nozzle_flow,
+    )
 
 
 def _molar(species: str) -> float:

@@ -309,6 +309,8 @@ class Flame:
     fired_burnout: dict | None = None
     release_table: object = None
     particle_absorption: tuple | None = None
+    o2_demand: float | None = None
+    nozzle_flow: float | None = None
 
     @property
     def adiabatic_temperature(self) -> float:
@@ -671,12 +673,18 @@ def _adiabatic(fuel, burner: Burner, oxidisers) -> float:
 
 def _fire_fired(burner: Burner, kiln_diameter: float, kiln_length: float | None) -> Flame:
     """:func:`fire` for a burner firing solid or liquid fuels
-    (:mod:`rotarykiln.kiln.combustion.fired_fuels`): products by elements, no jet numbers (the
-    flame length of a gaseous jet does not hold for a particle-laden one: give
-    ``flame_length`` for the ``burnout`` model, or use ``particles``)."""
+    (:mod:`rotarykiln.kiln.combustion.fired_fuels`): products by elements; with a nozzle
+    diameter the jet numbers of the primary air carrying the fuels
+    (:func:`~rotarykiln.kiln.combustion.fired_fuels.fired_jet`), whose entrainment limits the
+    ``particles`` model's release, but no Hawthorne-Weddell-Hottel flame length (it does not
+    hold for a particle-laden jet: give ``flame_length`` for the ``burnout`` model)."""
     import dataclasses
 
-    from rotarykiln.kiln.combustion.fired_fuels import burn_fired_fuels, particle_release
+    from rotarykiln.kiln.combustion.fired_fuels import (
+        burn_fired_fuels,
+        fired_jet,
+        particle_release,
+    )
 
     products, lhv, hhv, o2_needed, ash = burn_fired_fuels(burner)
     lam = sum(a.moles * a.o2_fraction for a in burner.flame_air) / o2_needed
@@ -686,6 +694,10 @@ def _fire_fired(burner: Burner, kiln_diameter: float, kiln_length: float | None)
         ("equivalent_diameter", "nozzle_velocity", "thring_newby", "entrainment_length")
     )
     jet["recirculating"] = None
+    nozzle_flow = None
+    if burner.nozzle_diameter is not None:
+        jet = fired_jet(burner, kiln_diameter)
+        nozzle_flow = jet.pop("nozzle_flow")
     x_w = burner.recirculation_length
     if burner.combustion == "stirred" and x_w is None and burner.nozzle_diameter is not None:
         x_w = max(kiln_diameter / 2.0 - burner.nozzle_diameter / 2.0, 0.0) / JET_SPREAD
@@ -718,6 +730,8 @@ def _fire_fired(burner: Burner, kiln_diameter: float, kiln_length: float | None)
         flame_length=None if flame_length is None else float(flame_length),
         combustion=burner.combustion,
         ash_flow=ash,
+        o2_demand=float(o2_needed),
+        nozzle_flow=nozzle_flow,
         **jet,
     )
     if burner.combustion != "particles":
