@@ -71,7 +71,7 @@ def test_bench_heat_sweep_1000_cases_2_processes(benchmark):
     )
     res = benchmark.pedantic(
         lambda: run_sweep(kiln_model, base, design, max_workers=2, store=tempfile.mkdtemp()),
-        rounds=1,
+        rounds=3,
         iterations=1,
     )
     assert len(res.frame) == 1000 and res.n_failed == 0
