@@ -187,14 +187,38 @@ def check_design_values(base: dict, design, option: str, model: str) -> None:
     for path, values in seen.items():
         items = list(values.values())
         if len(items) > 50:  # a sampled design: its extremes
-            numbers = [v for v in items if isinstance(v, int | float)]
-            items = [min(numbers), max(numbers)] if len(numbers) == len(items) else items[:50]
+            items = _extremes(items) or items[:50]
         for value in items:
             try:
                 parse_case(with_values(base, {path: value}))
             except InputError as exc:  # one line whatever the case loader quoted
                 text = str(exc).replace("\r", "\\r").replace("\n", "\\n")
                 raise InputError(option, message=f"{option}: {text}") from None
+
+
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+def _extremes(values: list) -> list | None:
+    """The smallest and largest of sampled design values: numbers, or quantities of one unit
+    (``"1.89 L/s"``, as the samplers write them); None for anything else.
+
+    Examples
+    --------
+    >>> _extremes(["1.9 L/s", "2.05 L/s", "1.81 L/s"])
+    ['1.81 L/s', '2.05 L/s']
+    >>> _extremes([3, 1.5, 2]), _extremes(["1 L/s", "2 kg/h"])
+    ([1.5, 3], None)
+    """
+    if all(isinstance(v, int | float) and not isinstance(v, bool) for v in values):
+        return [min(values), max(values)]
+    parsed = [_QUANTITY.match(v) if isinstance(v, str) else None for v in values]
+    if not all(parsed) or len({m.group(2) for m in parsed}) != 1:
+        return None
+    magnitudes = [float(m.group(1)) for m in parsed]
+    lo = min(range(len(values)), key=magnitudes.__getitem__)
+    hi = max(range(len(values)), key=magnitudes.__getitem__)
+    return [values[lo], values[hi]]
 
 
 def runner_options(args, folder) -> dict:
