@@ -291,7 +291,7 @@ def test_a_nozzle_lengthens_the_particle_flame_to_the_air_its_jet_entrains():
     # a jet that does not take in the O2 within the kiln leaves fuel unburnt: refused (here
     # one entraining 160 times less than Ricou-Spalding's)
     slow = dataclasses.replace(flame.burner, entrainment=0.002)
-    with pytest.raises(InputError, match=r"burner.nozzle_diameter.*entrains the O2"):
+    with pytest.raises(InputError, match=r"burner.nozzle_diameter: 0.012 m .*jet takes in the O2"):
         particle_release(dataclasses.replace(flame, burner=slow), 0.406, 5.5)
 
 

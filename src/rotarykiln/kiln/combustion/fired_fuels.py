@@ -455,10 +455,10 @@ def particle_release(flame, kiln_diameter: float, kiln_length: float):
         if share[-1] < 1.0:
             raise InputError(
                 "burner.nozzle_diameter",
-                flame.burner.nozzle_diameter,
-                f"a jet that entrains the O2 its fuels need within the kiln's {kiln_length:g} m "
-                f"(it holds {100.0 * share[-1]:.3g} % of it there: a smaller nozzle, or more "
-                "primary air)",
+                f"{flame.burner.nozzle_diameter:g} m",
+                f"a nozzle whose jet takes in the O2 its fuels need within the kiln's "
+                f"{kiln_length:g} m (it holds {100.0 * share[-1]:.3g} % of it there: a smaller "
+                "nozzle, or more primary air)",
             )
         released = np.minimum(released, released[-1] * share)
     cumulative = released / released[-1]
