@@ -538,7 +538,9 @@ class Burner(Section):
     a well-stirred recirculation zone, which needs ``recirculation_length`` or
     ``nozzle_diameter``).
     ``soot_volume_fraction``: a luminous flame (soot volume fraction f_v over the flame length,
-    e.g. 5e-8 for natural gas; default 0, a non-luminous flame), which needs the flame length.
+    e.g. 5e-8 for natural gas; default 0, a non-luminous flame), which needs the flame length
+    (or ``combustion: particles``: over the length within which the fuels release 99 % of their
+    heat).
     ``products``: ``equilibrium`` (default: the products dissociate at equilibrium, which
     lowers a hot flame's adiabatic temperature and returns the heat where the gas cools) or
     ``complete`` (frozen complete-combustion products).

@@ -399,6 +399,10 @@ def _inlet_gas(case) -> dict:
     return out
 
 
+#: A particle flame's luminous zone: where its fuels release this share of their heat.
+LUMINOUS_SHARE = 0.99
+
+
 def _products_flows(products) -> dict[str, float]:
     """Species mass flows (kg/s) of a burner's products: by their mass fractions when the
     products were made by elements (solid and liquid fuels: exact), else by their mole
@@ -411,14 +415,18 @@ def _products_flows(products) -> dict[str, float]:
 
 
 def _luminous_zone(section, flame, length: float, counter_current: bool):
-    """(f_v, z_start, z_end) of a sooting flame: the flame length from the burner end."""
+    """(f_v, z_start, z_end) of a sooting flame: the flame length from the burner end; for the
+    ``particles`` model without a flame length, the length within which its fuels release
+    99 % of their heat (:meth:`~rotarykiln.kiln.combustion.flame.Flame.release_distance`)."""
     lf = flame.flame_length
+    if lf is None:
+        lf = flame.release_distance(LUMINOUS_SHARE)
     if lf is None:
         raise InputError(
             "burner.soot_volume_fraction",
             section.soot_volume_fraction,
             "0 without burner.flame_length or burner.nozzle_diameter (the luminous zone is "
-            "the flame)",
+            "the flame), or with combustion: particles",
         )
     lf = min(float(lf), length)
     zone = (length - lf, length) if counter_current else (0.0, lf)

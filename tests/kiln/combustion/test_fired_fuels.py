@@ -295,6 +295,29 @@ def test_a_nozzle_lengthens_the_particle_flame_to_the_air_its_jet_entrains():
         particle_release(dataclasses.replace(flame, burner=slow), 0.406, 5.5)
 
 
+def test_a_sooting_coal_flame_radiates_over_the_length_its_particles_burn():
+    # soot given as a volume fraction: with the particles model the luminous zone is where the
+    # coal releases 99 % of its heat, from the burner (the gas inlet end of this
+    # counter-current kiln), with the jet's entrainment setting that length here
+    burner = dict(BURNERS["coal, particles, nozzle"], soot_volume_fraction=1e-7)
+    kiln, cells = kiln_from_case(_case(burner))
+    length = kiln.drum.length
+    d99 = kiln.firing.flame.release_distance(0.99)
+    assert kiln.firing.soot == pytest.approx((1e-7, length - d99, length))
+    plain, _ = kiln_from_case(_case(BURNERS["coal, particles, nozzle"]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sol, sol_plain = solve_kiln(kiln, cells), solve_kiln(plain, cells)
+    assert abs(sol.energy_closure) <= 1e-6
+    # the sooty gas radiates more where it burns: the wall there gets hotter
+    zone = sol.z >= length - d99
+    assert zone.any()
+    assert np.max(sol.t_wall[zone] - sol_plain.t_wall[zone]) > 0.0
+    assert kiln_from_case(_case(BURNERS["lignite, instant"]))[0].firing.soot is None
+    with pytest.raises(InputError, match="soot_volume_fraction"):
+        kiln_from_case(_case(dict(BURNERS["lignite, instant"], soot_volume_fraction=1e-7)))
+
+
 @pytest.mark.parametrize(
     "fuel, message",
     [
