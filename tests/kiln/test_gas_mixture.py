@@ -56,6 +56,21 @@ def test_a_batch_of_cases_each_with_its_own_composition():
     np.testing.assert_allclose(gas.enthalpy_flow(T), h, rtol=1e-12, atol=1e-9 * np.abs(h).max())
 
 
+def test_cases_of_one_composition_at_their_own_flows_keep_their_own_enthalpy_flows():
+    # the heat sweep's cases: one inlet gas, its flow scaled per case (here by powers of 2,
+    # which leave the mole fractions equal to the last bit): one transport table serves all,
+    # but each case's enthalpy flow is that of its own flows
+    mixture = GasMixture.of(NAMES)
+    base = np.array([0.7, 0.2, 0.05, 0.04, 0.01])
+    flows = base * np.array([1.0, 2.0, 0.5])[:, None, None]
+    gas = MixtureGas.of(mixture, flows, 101325.0, 0.2)
+    assert gas._fixed is not None and gas._fixed[1] is None  # one composition
+    T = np.random.default_rng(3).uniform(250.0, 3400.0, (3, 20))
+    h = (gas.flows * mixture.species_enthalpy(T)).sum(-1)
+    np.testing.assert_allclose(gas.enthalpy_flow(T), h, rtol=1e-12, atol=1e-9 * np.abs(h).max())
+    np.testing.assert_allclose(gas.cp(T), _cell_by_cell(gas, T)[3], rtol=1e-13)
+
+
 def test_the_tables_of_a_composition_are_made_once_and_the_kept_ones_bounded():
     from rotarykiln.kiln import gas_mixture
 

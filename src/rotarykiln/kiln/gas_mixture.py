@@ -612,10 +612,13 @@ class MixtureGas:
         one composition from its flows' own tables (:meth:`GasMixture.enthalpy_tables`),
         else :math:`\\sum_k \\dot m_k h_k(T)` species by species."""
         if self._fixed_cp is not None:
+            # one composition, but not one flow: cases of a batch may carry it at their own
+            # rates, so the flows (not the mole fractions) decide whether one table serves all
             q = self.flows.reshape(-1, self.flows.shape[-1])
-            rows = self._fixed[1]
-            tables = self.mixture.enthalpy_tables(q[:1] if rows is None else q)
-            return self.mixture.fixed_enthalpy(T, tables, rows)
+            if (q == q[:1]).all():
+                return self.mixture.fixed_enthalpy(T, self.mixture.enthalpy_tables(q[:1]))
+            rows = np.arange(q.shape[0]).reshape(self.flows.shape[:-2] + (1,))
+            return self.mixture.fixed_enthalpy(T, self.mixture.enthalpy_tables(q), rows)
         return (self.flows * self.mixture.species_enthalpy(T)).sum(-1)
 
     def cp(self, T):
