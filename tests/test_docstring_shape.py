@@ -48,8 +48,8 @@ HELPER = re.compile(
 #: warnings, table columns): numerics and post-processing, not models.
 KILN_HELPER = re.compile(
     r"^(newton_with_continuation|newton_sequenced|ramp|scaled|locator|equation_names|"
-    r"initial_temperatures|interpolate_unknowns|front_cells|inlet_front|relax_local|profile_fields|"
-    r"colour_batch|cell_report|"
+    r"initial_temperatures|interpolate_unknowns|front_cells|inlet_front|relax_local|"
+    r"profile_fields|colour_batch|cell_report|"
     r"closure_warnings|emit|heat_share|heat_flow_columns|zigzag|kiln_at|output_times_bound|"
     r"finish_solution|newton_options|same_structure|structure_groups|batch_size_for|batch_residuals|"
     r".*_from_case)$"

@@ -268,8 +268,9 @@ def relax_local(
     """``x`` with its local unknowns (``local``: bool per variable, the unknowns that act on
     their own cell's rows only, such as a lining's radial temperatures) relaxed by
     ``iterations`` Newton steps on their own rows, every other unknown held: block-Jacobi
-    Newton, each cell's small block solved apart (the local unknowns are temperatures, K). The blocks come from one residual call of
-    one perturbation per local variable (all cells at once), so a step costs
+    Newton, each cell's small block solved apart (the local unknowns are temperatures, K).
+    The blocks come from one residual call of one perturbation per local variable (all cells
+    at once), so a step costs
     ``1 + sum(local)`` cell-wise evaluations, not a banded Jacobian's ``3 nv``. Temperature
     steps are limited to ``max_step`` and kept above ``lower`` (K), as in
     :func:`newton_banded`. Returns ``x`` unchanged when the relaxed point does not lower the
