@@ -62,3 +62,42 @@ def test_a_batched_chunk_makes_no_case_dict_it_does_not_need(monkeypatch):
     rows = runner._run_chunk(kiln_model, base, design, False)
     assert all(not r["error"] for r in rows) and len(rows) == 3
     assert made == []
+
+
+def _recording_model(sizes):
+    """A cheap batched model that records the size of each chunk it is given."""
+
+    def model(case):
+        return {"speed": float(str(case["operation"]["speed"]).split()[0])}
+
+    def batched(cases, warnings_out=None, *, base=None, changes=None):
+        sizes.append(len(cases))
+        return [model(c) for c in cases]
+
+    model.batched = batched
+    return model
+
+
+@pytest.mark.parametrize(
+    ("cases", "batch", "expected"),
+    [
+        (200, None, [100, 100]),
+        (300, None, [100, 100, 100]),
+        (90, None, [90]),
+        (10, 4, [4, 4, 2]),
+        (2, None, [2]),
+    ],
+)
+def test_a_serial_sweep_solves_even_chunks_of_at_most_its_batch(cases, batch, expected):
+    """In one process a batched model gets chunks of even sizes, at most SERIAL_BATCH cases
+    (or --batch): not the two chunks per worker a pool would take (each chunk's first case is
+    solved alone, and the others start nearer in a larger chunk)."""
+    from rotarykiln.studies import runner
+
+    assert runner.SERIAL_BATCH == 128
+    sizes: list[int] = []
+    design = grid({"operation.speed": [f"{1 + k / 1000:.4f} rpm" for k in range(cases)]})
+    base = {"operation": {"speed": "1 rpm"}}
+    res = run_sweep(_recording_model(sizes), base, design, executor="serial", batch=batch)
+    assert sizes == expected
+    assert res.frame["speed"].tolist() == pytest.approx([1 + k / 1000 for k in range(cases)])

@@ -336,17 +336,30 @@ def test_broyden_updates_keep_the_secant_equation_and_reach_the_same_root():
     for i in range(size):
         for j in range(max(0, i - bw), min(size, i + bw + 1)):
             ab[bw + i - j, j] = dense[i, j]
-    secant = _Broyden(1, bw)
     factors = _factor(ab, bw)
-    f = rng.normal(size=size)
+    # two cases sharing the factors (solved in one LAPACK call), with their own secants
+    secant = _Broyden(2, size, bw, 3)
+    both = np.array([0, 1])
+    shared = [factors, factors]
+    f = rng.normal(size=(2, size))
     for _ in range(3):
-        d = secant.direction(factors, 0, f)  # -H_k F_k
-        s, f_new = rng.normal(size=size), rng.normal(size=size)
-        secant.update(factors, 0, d, s, f_new)
-        np.testing.assert_allclose(secant.apply(factors, 0, f_new - f), s, rtol=1e-9, atol=1e-11)
+        d, ok = secant.directions(shared, both, f)  # -H_k F_k
+        assert ok.all()
+        s, f_new = rng.normal(size=(2, size)), rng.normal(size=(2, size))
+        secant.update(shared, both, d, s, f_new)
+        mapped, _ = secant.apply(shared, both, f_new - f)
+        np.testing.assert_allclose(mapped, s, rtol=1e-9, atol=1e-11)
         # the next direction it found is -H_{k+1} F_{k+1}
-        np.testing.assert_allclose(secant.next[0], secant.apply(factors, 0, -f_new), rtol=1e-9)
+        np.testing.assert_allclose(secant.next, secant.apply(shared, both, -f_new)[0], rtol=1e-9)
         f = f_new
+    # each case alone: the same inverse as in the pair
+    alone = _Broyden(1, size, bw, 3)
+    alone.c[0], alone.s[0], alone.count[0] = secant.c[1], secant.s[1], secant.count[1]
+    np.testing.assert_allclose(
+        alone.apply([factors], np.array([0]), f[1:])[0],
+        secant.apply(shared, both, f)[0][1:],
+        rtol=1e-12,
+    )
 
     target = rng.uniform(300.0, 900.0, (2, 1, 1, 1))
 

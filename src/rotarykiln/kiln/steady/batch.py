@@ -432,8 +432,28 @@ def _solve(factors, rhs: np.ndarray, bw: int, trans: int = 0):
     return x if info == 0 else None
 
 
+def _solve_cases(factors: list, cases: np.ndarray, rhs: np.ndarray, bw: int):
+    """The banded solves of the cases ``cases`` with their factors (``factors[c]``) for the
+    right-hand sides ``rhs`` (k, N): (solutions (k, N), bool (k,) where the solve worked).
+    Cases that share their factors (a neighbour's, kept: the usual start of a batch) are
+    solved in one LAPACK call of several right-hand sides."""
+    out = np.full(rhs.shape, np.nan)
+    ok = np.zeros(len(cases), dtype=bool)
+    groups: dict[int, list[int]] = {}
+    for i, c in enumerate(cases):
+        if factors[c] is not None:
+            groups.setdefault(id(factors[c]), []).append(i)
+    for rows in groups.values():
+        x = _solve(factors[cases[rows[0]]], rhs[rows].T, bw)
+        if x is not None:
+            out[rows] = x.T
+            ok[rows] = True
+    return out, ok
+
+
 class _Broyden:
-    r"""Broyden's (good) updates of the inverse of a kept Jacobian, per case.
+    r"""Broyden's (good) updates of the inverse of a kept Jacobian, for the cases of a batch
+    at once.
 
     .. math:: H_{k+1} = H_k + c_k\,s_k^T H_k,\qquad
               c_k = \frac{s_k - H_k y_k}{s_k^T H_k y_k}
@@ -447,54 +467,70 @@ class _Broyden:
     secant of each step: superlinear where a kept Jacobian (a neighbour's, or its own from
     earlier iterates) alone contracts linearly.
 
+    Each case's pairs are rows of arrays (case, pair, unknown), applied to all the cases of
+    an iteration together; the banded solves of cases that share their factors are one call
+    (:func:`_solve_cases`).
+
     References
     ----------
     C.G. Broyden, Math. Comp. 19 (1965) 577-593; J.E. Dennis, R.B. Schnabel (1983), ch. 8;
     C.T. Kelley, Iterative Methods for Linear and Nonlinear Equations, SIAM (1995), ch. 7-8.
     """
 
-    def __init__(self, cases: int, bw: int):
-        self.pairs: list[list] = [[] for _ in range(cases)]
-        self.next: list = [None] * cases  # the direction of each case's next step, if known
+    def __init__(self, cases: int, size: int, bw: int, limit: int):
+        self.c = np.zeros((cases, max(limit, 1), size))
+        self.s = np.zeros((cases, max(limit, 1), size))
+        self.count = np.zeros(cases, dtype=int)
+        self.next = np.zeros((cases, size))  # the direction of each case's next step ...
+        self.known = np.zeros(cases, dtype=bool)  # ... where its last update gave it
         self.bw = bw
 
-    def reset(self, c: int) -> None:
-        self.pairs[c] = []
-        self.next[c] = None
+    def reset(self, cases: np.ndarray) -> None:
+        self.count[cases] = 0
+        self.known[cases] = False
 
-    def apply(self, factors, c: int, r: np.ndarray):
-        """:math:`H_k r` of case ``c`` (r flat), or None where the banded solve fails."""
-        out = _solve(factors, r.reshape(-1, 1), self.bw)
-        if out is None:
-            return None
-        out = out[:, 0]
-        for cj, sj in self.pairs[c]:
-            out = out + cj * (sj @ out)
-        return out
+    def apply(self, factors: list, cases: np.ndarray, r: np.ndarray):
+        """:math:`H_k r` of the cases ``cases`` (r (k, N)): (values, bool (k,) where the
+        banded solve worked)."""
+        out, ok = _solve_cases(factors, cases, r, self.bw)
+        m = self.count[cases]
+        for j in range(int(m.max(initial=0))):
+            w = np.einsum("kn,kn->k", self.s[cases, j], out)
+            out += self.c[cases, j] * np.where(m > j, w, 0.0)[:, None]
+        return out, ok
 
-    def direction(self, factors, c: int, f: np.ndarray):
-        """:math:`-H_k F` of case ``c`` at its residual ``f`` (flat): the one its last update
-        gave, else computed."""
-        d = self.next[c]
-        self.next[c] = None
-        return d if d is not None else self.apply(factors, c, -f)
+    def directions(self, factors: list, cases: np.ndarray, f: np.ndarray):
+        """:math:`-H_k F` of the cases ``cases`` at their residuals ``f`` (k, N): the ones
+        their last updates gave, else computed; (directions, bool (k,) where found)."""
+        d = np.empty(f.shape)
+        ok = np.ones(len(cases), dtype=bool)
+        known = self.known[cases]
+        d[known] = self.next[cases[known]]
+        if not known.all():
+            d[~known], ok[~known] = self.apply(factors, cases[~known], -f[~known])
+        self.known[cases] = False
+        return d, ok
 
-    def update(self, factors, c: int, d: np.ndarray, s: np.ndarray, f_new: np.ndarray) -> None:
-        """The secant of case ``c``'s step ``s`` (flat) taken along the direction ``d`` to the
-        residual ``f_new``: a pair kept and the next direction found (no update where the
-        secant is degenerate: the next direction is then computed afresh)."""
-        z = self.apply(factors, c, -f_new)
-        if z is None:
-            return
-        denom = float(s @ (d - z))
-        if not np.isfinite(denom) or abs(denom) <= 1e-12 * np.linalg.norm(s) * np.linalg.norm(
-            d - z
-        ):
-            self.next[c] = z
-            return
-        cj = (s + z - d) / denom
-        self.pairs[c].append((cj, s))
-        self.next[c] = z + cj * (s @ z)
+    def update(self, factors: list, cases, d: np.ndarray, s: np.ndarray, f_new: np.ndarray):
+        """The secants of the steps ``s`` (k, N) the cases ``cases`` took along the
+        directions ``d`` to the residuals ``f_new``: a pair kept and the next direction found
+        (no pair where a secant is degenerate: the next direction is then the solve's)."""
+        z, ok = self.apply(factors, cases, -f_new)
+        cases, d, s, z = cases[ok], d[ok], s[ok], z[ok]
+        dz = d - z
+        denom = np.einsum("kn,kn->k", s, dz)
+        size = np.linalg.norm(s, axis=1) * np.linalg.norm(dz, axis=1)
+        secant = np.isfinite(denom) & (np.abs(denom) > 1e-12 * size)
+        self.next[cases[~secant]] = z[~secant]
+        self.known[cases[~secant]] = True
+        cases, s, z, dz, denom = cases[secant], s[secant], z[secant], dz[secant], denom[secant]
+        cj = (s - dz) / denom[:, None]
+        slot = self.count[cases]
+        self.c[cases, slot] = cj
+        self.s[cases, slot] = s
+        self.count[cases] += 1
+        self.next[cases] = z + cj * np.einsum("kn,kn->k", s, z)[:, None]
+        self.known[cases] = True
 
 
 def newton_batch(
@@ -598,7 +634,7 @@ def newton_batch(
     status = np.zeros(B, dtype=int)  # 0 running, 1 converged, -1 failed
     factors: list = list(start_factors) if isinstance(start_factors, list) else [start_factors] * B
     fresh = np.array([f is None for f in factors])  # needs its Jacobian now
-    secant = _Broyden(B, bw)
+    secant = _Broyden(B, n * nv, bw, broyden)
     rate = BROYDEN_RATE if broyden else CHORD_RATE
     for it in range(1, max_iter + 1):
         status[(status == 0) & (norm <= tol)] = 1
@@ -610,20 +646,16 @@ def newton_batch(
         if need.size:
             for c, f in zip(need, jacobian_factors(F, x[need], need, R[need], **jkw), strict=True):
                 factors[c] = f
-                secant.reset(c)
                 if f is None:
                     status[c] = -1
             fresh[need] = False
+            secant.reset(need)
             act = np.flatnonzero(status == 0)
             if act.size == 0:
                 continue
-        dx = np.empty((act.size, n, nv))
-        ok = np.ones(act.size, dtype=bool)
-        for i, c in enumerate(act):
-            d = secant.direction(factors[c], c, R[c].ravel())
-            ok[i] = d is not None and bool(np.all(np.isfinite(d)))
-            if ok[i]:
-                dx[i] = d.reshape(n, nv)
+        d, ok = secant.directions(factors, act, R[act].reshape(act.size, -1))
+        ok &= np.isfinite(d).all(axis=1)
+        dx = d.reshape(act.size, n, nv)
         kept = ~np.isin(act, need)
         fresh[act[~ok & kept]] = True  # a kept Jacobian that fails: the case's own, then
         status[act[~ok & ~kept]] = -1
@@ -672,11 +704,18 @@ def newton_batch(
                 move[i] = True  # the smallest step, as newton_banded takes it
         moved = act[move]
         if broyden:
-            for c, d, xn, rn in zip(moved, dx[move], xt_all[move], Rt_all[move], strict=True):
-                if len(secant.pairs[c]) >= broyden:
-                    fresh[c] = True
-                else:
-                    secant.update(factors[c], c, d.ravel(), (xn - x[c]).ravel(), rn.ravel())
+            full = secant.count[moved] >= broyden
+            fresh[moved[full]] = True
+            upd = ~full
+            if upd.any():
+                k = int(upd.sum())
+                secant.update(
+                    factors,
+                    moved[upd],
+                    dx[move][upd].reshape(k, -1),
+                    (xt_all[move][upd] - x[moved[upd]]).reshape(k, -1),
+                    Rt_all[move][upd].reshape(k, -1),
+                )
         x[moved], R[moved], norm[moved] = xt_all[move], Rt_all[move], nt_norm[move]
         iterations[moved] = it
         slow = moved[norm[moved] > rate * old[move]]
