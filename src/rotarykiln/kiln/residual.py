@@ -88,7 +88,13 @@ class KilnResidual:
     (:class:`~rotarykiln.kiln.inputs.boundary.BoundaryInputs`) and the continuation
     parameters (:class:`~rotarykiln.kiln.inputs.boundary.Scales`) are arguments of
     :meth:`evaluate`; nothing of the residual is set from outside.
+
+    :attr:`cell_evaluations` counts the cells every residual evaluates (over all residuals:
+    a work count the batched solver compares between its paths, never an input).
     """
+
+    #: Cells evaluated by every residual's :meth:`evaluate` so far (cells x stacked states).
+    cell_evaluations = 0
 
     def __init__(
         self, kiln: Kiln, n_cells: int, *, q_ref: float | None = None, every_species=False
@@ -522,6 +528,7 @@ class KilnResidual:
         """
         dz = self.dz
         u = inputs or self.inputs
+        KilnResidual.cell_evaluations += x.size // x.shape[-1]
         tb_n, tg_n, qb, qg = self.faces(x, u)
         tbn = np.maximum(tb_n, T_FLOOR)
         tgn = np.maximum(tg_n, T_FLOOR)

@@ -247,6 +247,40 @@ def test_kilns_of_another_structure_start_from_their_neighbour(monkeypatch):
             _same_solution(sol, solve_kiln(k, cells, tol=TOL))
 
 
+def test_a_group_whose_batched_newton_crawls_solves_its_other_cases_alone(monkeypatch):
+    """When the batched parts of a group cost more cells a case than SLOW_BATCH_FACTOR times
+    its first case's solve alone (a reaction front moving between operating points), the
+    group's other cases are solved alone: each the very solve of the single path."""
+    from rotarykiln.kiln.steady import batch as B
+
+    kiln, _ = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    kilns = [kiln, *operating_points(kiln, 40, seed=4)]
+    cells = 40
+    alone, original = [], B._alone
+    monkeypatch.setattr(B, "_alone", lambda res, *a: alone.append(res) or original(res, *a))
+    parts, chunk = [], B._solve_chunk
+    monkeypatch.setattr(
+        B, "_solve_chunk", lambda r, part, *a: parts.append(part) or chunk(r, part, *a)
+    )
+    monkeypatch.setattr(B, "SLOW_BATCH_FACTOR", 0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        out = solve_batch(kilns, cells)
+        assert len(parts) == 1  # the seeds, batched; then every other case alone
+        assert len(alone) == len(kilns) - len(parts[0])
+        others = [k for k in range(1, len(kilns)) if k not in parts[0]]
+        for k in (0, others[0], others[-1]):
+            single = solve_kiln(kilns[k], cells)
+            np.testing.assert_array_equal(out[k].t_bed, single.t_bed)  # the same solve
+    monkeypatch.setattr(B, "SLOW_BATCH_FACTOR", 2.0)
+    alone.clear()
+    parts.clear()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        solve_batch(kilns, cells)
+    assert len(alone) == 1 and len(parts) == 3  # this kiln's Newton does not crawl
+
+
 def test_batch_sizes_are_checked_and_reduced_to_fit_memory(caplog):
     kiln, cells = kiln_from_case(load_case(builtin_case_path("barr_T4")))
     res = KilnResidual(kiln, cells)

@@ -25,6 +25,7 @@ grid sequencing) and, if that fails too, returns its own
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import logging
 import math
@@ -895,6 +896,16 @@ def _from_neighbour(residuals, i, solved, out, caught, opts):
     return result
 
 
+#: When the batched parts of a group have cost more than this many times the cells its first
+#: case's solve alone evaluated (a case on average, cells x states of every residual
+#: evaluation), the group's remaining cases are solved alone, each with the grid sequencing of
+#: a single solve. A reaction front that moves between operating points makes Newton from a
+#: neighbour crawl: the limestone calcination kiln's first wave took 38-46 iterations a case,
+#: 4.7 times the cells of a solve alone (2.8 times its time: 60 ms a case against 30 ms), the
+#: fired limestone kiln's 2.8 times (1.75 times the time). The cement kiln's first wave
+#: costs 1.7 times (its later waves 0.1-0.9), every other built-in kiln's 0.16-0.6.
+SLOW_BATCH_FACTOR = 2.0
+
 #: The second wave of a chunk (:func:`_solve_group`): one case in LEVEL2 of those left after
 #: its seeds, spread over the inputs, solved before the rest so that these start nearer.
 LEVEL2 = 4
@@ -983,6 +994,36 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
                 lu[i] = factors[b]
 
 
+class _Cost:
+    """The cells evaluated (:attr:`KilnResidual.cell_evaluations`) by a group's first solve
+    alone and by its batched parts, case by case: whether the batch costs more than
+    :data:`SLOW_BATCH_FACTOR` times the solve alone (a count of work, not a time: the same
+    choice on every run)."""
+
+    def __init__(self):
+        self.single: int | None = None
+        self.cells = 0
+        self.cases = 0
+
+    @contextlib.contextmanager
+    def alone(self):
+        start = KilnResidual.cell_evaluations
+        yield
+        self.single = KilnResidual.cell_evaluations - start
+
+    @contextlib.contextmanager
+    def batched(self, cases: int):
+        start = KilnResidual.cell_evaluations
+        yield
+        self.cells += KilnResidual.cell_evaluations - start
+        self.cases += cases
+
+    def slow(self) -> bool:
+        if not self.single or not self.cases:
+            return False
+        return self.cells / self.cases > SLOW_BATCH_FACTOR * self.single
+
+
 def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     """Solve the cases ``group`` of one structure into ``out`` (their warnings into
     ``caught``): the first from the nearest case ``solved_before`` (other structures) of the
@@ -990,9 +1031,11 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     of the group; a case that fails there alone. The solved cases are appended to
     ``solved_before``."""
     first = group[0]
+    cost = _Cost()
     out[first] = _from_neighbour(residuals, first, solved_before, out, caught[first], opts)
     if out[first] is None:
-        out[first] = _alone(residuals[first], caught[first], opts)
+        with cost.alone():
+            out[first] = _alone(residuals[first], caught[first], opts)
     if isinstance(out[first], ConvergenceError):
         for i in group[1:]:  # no start to share: each case alone
             out[i] = _alone(residuals[i], caught[i], opts)
@@ -1021,7 +1064,15 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
         second = _seeds(others, key, [key[j] for j in [*lu, *seeds]], len(others) // LEVEL2)
         others = [i for i in others if i not in set(second)]
         for part in (seeds, second, others):
-            if part:
+            if not part:
+                continue
+            if cost.slow():  # the batch costs more than the cases alone: the rest alone
+                for i in part:
+                    out[i] = _alone(residuals[i], caught[i], opts)
+                    if not isinstance(out[i], ConvergenceError):
+                        solved.append(i)
+                continue
+            with cost.batched(len(part)):
                 _solve_chunk(residuals, part, key, lu, out, caught, opts, solved)
     if isinstance(solved_before, list):
         solved_before.extend(solved)
