@@ -845,9 +845,11 @@ def _recorded(caught: list, run: Callable):
     return result
 
 
-def _alone(res: KilnResidual, caught: list, opts: dict):
+def _alone(res: KilnResidual, caught: list, opts: dict, cost: _Cost | None = None):
+    """The case of ``res`` solved alone (:func:`solve_kiln`), its work counted in ``cost``."""
     kw = {k: opts[k] for k in ("tol", "max_iter", "check_balances")}
-    return _recorded(caught, lambda: solve_kiln(res.kiln, res.n, **kw))
+    with cost.alone() if cost is not None else contextlib.nullcontext():
+        return _recorded(caught, lambda: solve_kiln(res.kiln, res.n, **kw))
 
 
 def _layout(res: KilnResidual) -> tuple:
@@ -896,14 +898,16 @@ def _from_neighbour(residuals, i, solved, out, caught, opts):
     return result
 
 
-#: When the batched parts of a group have cost more than this many times the cells its first
-#: case's solve alone evaluated (a case on average, cells x states of every residual
-#: evaluation), the group's remaining cases are solved alone, each with the grid sequencing of
-#: a single solve. A reaction front that moves between operating points makes Newton from a
-#: neighbour crawl: the limestone calcination kiln's first wave took 38-46 iterations a case,
-#: 4.7 times the cells of a solve alone (2.8 times its time: 60 ms a case against 30 ms), the
-#: fired limestone kiln's 2.8 times (1.75 times the time). The cement kiln's first wave
-#: costs 1.7 times (its later waves 0.1-0.9), every other built-in kiln's 0.16-0.6.
+#: When a group's batched Newton iterations have cost more than this many times its solves
+#: alone, a case on average (cells x states of every residual evaluation; the solves alone are
+#: its first case's and those of cases that failed in the batch), the group's remaining cases
+#: are solved alone, each with the grid sequencing of a single solve. A reaction front that
+#: moves between operating points makes Newton from a neighbour crawl: the limestone
+#: calcination kiln's first wave took 38-46 iterations a case, 4.7 times the cells of a solve
+#: alone (2.8 times its time: 60 ms a case against 30 ms), the fired limestone kiln's 2.7 times
+#: (1.75 times the time). The cement kiln's first wave costs 1.7 times, its later ones
+#: 0.1-0.9; the lime kiln's solves alone need its feed continuation, and its batched cases cost
+#: a fraction of them; every other built-in kiln's 0.16-0.6.
 SLOW_BATCH_FACTOR = 2.0
 
 #: The second wave of a chunk (:func:`_solve_group`): one case in LEVEL2 of those left after
@@ -928,7 +932,7 @@ def _seeds(chunk: list, key: dict, known: list, k: int | None = None) -> list:
     return picked
 
 
-def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
+def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved, cost=None):
     """Solve the cases ``chunk`` of one structure together, each from the nearest case with
     kept LU factors (``lu``: case -> factors; its solution the start, its Jacobian the
     first); a case that fails there is solved alone. The solved cases are appended to
@@ -987,7 +991,7 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
                 caught[i].extend(shared)
         if not ok[b] or isinstance(out[i], ConvergenceError):
             caught[i].clear()
-            out[i] = _alone(residuals[i], caught[i], opts)
+            out[i] = _alone(residuals[i], caught[i], opts, cost)
         if not isinstance(out[i], ConvergenceError):
             solved.append(i)
             if keep and ok[b] and factors[b] is not None:
@@ -995,33 +999,36 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved):
 
 
 class _Cost:
-    """The cells evaluated (:attr:`KilnResidual.cell_evaluations`) by a group's first solve
-    alone and by its batched parts, case by case: whether the batch costs more than
-    :data:`SLOW_BATCH_FACTOR` times the solve alone (a count of work, not a time: the same
-    choice on every run)."""
+    """The work of a group's solves alone (its first case's, and those of cases that fail in
+    the batch or follow a slow one) and of its batched Newton iterations, in cells evaluated
+    (:attr:`KilnResidual.cell_evaluations`): whether a batched case costs more than
+    :data:`SLOW_BATCH_FACTOR` times a solve alone on average (a count of work, not a time: the
+    same choice on every run)."""
 
     def __init__(self):
-        self.single: int | None = None
-        self.cells = 0
-        self.cases = 0
+        self.alone_cells = self.alone_count = 0
+        self.batch_cells = self.batch_cases = 0
 
     @contextlib.contextmanager
     def alone(self):
         start = KilnResidual.cell_evaluations
         yield
-        self.single = KilnResidual.cell_evaluations - start
+        self.alone_cells += KilnResidual.cell_evaluations - start
+        self.alone_count += 1
 
     @contextlib.contextmanager
     def batched(self, cases: int):
-        start = KilnResidual.cell_evaluations
+        """The batched solve of ``cases`` cases (the solves alone inside it counted as such)."""
+        start, inside = KilnResidual.cell_evaluations, self.alone_cells
         yield
-        self.cells += KilnResidual.cell_evaluations - start
-        self.cases += cases
+        self.batch_cells += KilnResidual.cell_evaluations - start - (self.alone_cells - inside)
+        self.batch_cases += cases
 
     def slow(self) -> bool:
-        if not self.single or not self.cases:
+        if not self.alone_count or not self.batch_cases:
             return False
-        return self.cells / self.cases > SLOW_BATCH_FACTOR * self.single
+        per_alone = self.alone_cells / self.alone_count
+        return self.batch_cells / self.batch_cases > SLOW_BATCH_FACTOR * per_alone
 
 
 def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
@@ -1034,8 +1041,7 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
     cost = _Cost()
     out[first] = _from_neighbour(residuals, first, solved_before, out, caught[first], opts)
     if out[first] is None:
-        with cost.alone():
-            out[first] = _alone(residuals[first], caught[first], opts)
+        out[first] = _alone(residuals[first], caught[first], opts, cost)
     if isinstance(out[first], ConvergenceError):
         for i in group[1:]:  # no start to share: each case alone
             out[i] = _alone(residuals[i], caught[i], opts)
@@ -1068,11 +1074,11 @@ def _solve_group(residuals, group, size, out, caught, opts, solved_before=()):
                 continue
             if cost.slow():  # the batch costs more than the cases alone: the rest alone
                 for i in part:
-                    out[i] = _alone(residuals[i], caught[i], opts)
+                    out[i] = _alone(residuals[i], caught[i], opts, cost)
                     if not isinstance(out[i], ConvergenceError):
                         solved.append(i)
                 continue
             with cost.batched(len(part)):
-                _solve_chunk(residuals, part, key, lu, out, caught, opts, solved)
+                _solve_chunk(residuals, part, key, lu, out, caught, opts, solved, cost)
     if isinstance(solved_before, list):
         solved_before.extend(solved)
