@@ -540,7 +540,7 @@ def run_sweep(
     create: bool = False,
     store=None,
     progress: bool | None = False,
-    flush_every: int = 200,
+    flush_every: int = 1000,
     flush_seconds: float = 2.0,
     callback: Callable[[int, int, int], None] | None = None,
     dask_timeout: float = 10.0,
