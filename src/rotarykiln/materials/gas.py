@@ -250,13 +250,28 @@ class PiecewisePolynomials:
 def parse_composition(composition) -> tuple[tuple[str, float], ...]:
     """Normalised mole fractions as a sorted tuple of ``(species, x)`` pairs.
 
-    Accepts ``"O2:0.21, N2:0.79"`` or a mapping.
+    Accepts ``"O2:0.21, N2:0.79"`` or a mapping (or its items). A text or a tuple of pairs is
+    parsed once and kept (a kiln's set-up asks for its gases' compositions a dozen times).
 
     Examples
     --------
     >>> parse_composition("N2:79, O2:21")
     (('N2', 0.79), ('O2', 0.21))
     """
+    if isinstance(composition, (str, tuple)):
+        try:
+            return _parse_kept(composition)
+        except TypeError:  # a tuple holding something unhashable
+            pass
+    return _parse_composition(composition)
+
+
+@lru_cache(maxsize=1024)
+def _parse_kept(composition) -> tuple[tuple[str, float], ...]:
+    return _parse_composition(composition)
+
+
+def _parse_composition(composition) -> tuple[tuple[str, float], ...]:
     if isinstance(composition, str):
         items = {}
         for part in composition.split(","):
