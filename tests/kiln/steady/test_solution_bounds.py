@@ -103,6 +103,11 @@ def test_a_zigzag_or_a_phase_beyond_its_partners_is_a_failed_solve(big_drum):
     with pytest.raises(ConvergenceError, match="T_gas reaches 250 K.*colder"):
         solve_module._check_within_partners(res, tb, tg, wall, 0)
     solve_module._check_within_partners(res, tb, np.full(res.n + 1, 600.0), wall, 0)
+    # a wall layer colder than everything around it
+    cold_wall = wall.copy()
+    cold_wall[3, -1] = 100.0
+    with pytest.raises(ConvergenceError, match=r"T_wall reaches 100 K at z = 0\.035.*colder"):
+        solve_module._check_within_partners(res, tb, np.full(res.n + 1, 600.0), cold_wall, 0)
 
 
 def test_exhaust_dry_o2_is_zero_without_o2_and_never_nan(big_drum):
@@ -114,3 +119,21 @@ def test_exhaust_dry_o2_is_zero_without_o2_and_never_nan(big_drum):
     state, _ = exhaust_state(res, steam_only, 500.0)
     assert state["O2_dry_mole_fraction"] is None  # no dry gas: undefined, said so
     assert "no dry gas" in state["O2_dry_note"]
+
+
+def test_an_inert_bed_hotter_than_its_gas_wall_and_feed_is_a_failed_solve():
+    """Without reactions the bed is checked both ways (here: Tscheng A16, 10 cells)."""
+    kiln, _ = kiln_from_case(
+        parse_case(yaml.safe_load(builtin_case_path("tscheng_A16").read_text()))
+    )
+    res = KilnResidual(kiln, 10)
+    tg = np.full(res.n + 1, 500.0)
+    wall = np.full((res.n, res.n_wall), 450.0)
+    tb = np.full(res.n + 1, 400.0)
+    solve_module._check_within_partners(res, tb, tg, wall, 0)
+    tb[4] = 700.0
+    with pytest.raises(ConvergenceError, match=r"T_bed reaches 700 K at z = .*hotter.*\(500 K\)"):
+        solve_module._check_within_partners(res, tb, tg, wall, 0)
+    tb[4] = 200.0  # below the feed (298 K) and everything else
+    with pytest.raises(ConvergenceError, match=r"T_bed reaches 200 K.*colder"):
+        solve_module._check_within_partners(res, tb, tg, wall, 0)

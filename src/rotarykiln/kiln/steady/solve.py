@@ -516,28 +516,36 @@ def _check_within_partners(res: KilnResidual, tb_n, tg_n, t_wall, iterations) ->
     outside = [t for t in outside if t is not None]
     if jacket is not None:
         outside.append(float(jacket.inlet_temperature))
-    t_wall = np.asarray(t_wall).reshape(res.n, -1)
+    t_wall = np.asarray(t_wall, dtype=float).reshape(res.n, -1)
+    tb_n, tg_n = np.asarray(tb_n, dtype=float), np.asarray(tg_n, dtype=float)
     inner = t_wall[:, 0]
-    gas_in = [k.gas.temperature, k.wall.ambient_temperature]
-    checks = []  # (name, values, partners' hottest, coldest, check hot, check cold)
-    partners = [np.asarray(gas_in), inner, tb_n]
+    # each profile's extremes once (the checks compare them; the cells only for a message)
+    top = {"bed": float(tb_n.max()), "gas": float(tg_n.max()), "wall": float(t_wall.max())}
+    low = {"bed": float(tb_n.min()), "gas": float(tg_n.min()), "wall": float(t_wall.min())}
+    top["inner"], low["inner"] = float(inner.max()), float(inner.min())
+    gas_in = [float(k.gas.temperature), float(k.wall.ambient_temperature)]
+    feed = [float(k.feed.temperature)]
+    outside = [float(t) for t in outside]
+    checks = []  # (name, values, its key, partners' hottest and coldest, check hot, check cold)
     if not gas_sources:
-        checks.append(("T_gas", tg_n, partners, True, True))
-    checks.append(("T_wall", t_wall, [tg_n, tb_n, np.asarray(outside)], not powered, True))
-    bed_partners = [np.asarray([k.feed.temperature]), tg_n, inner]
-    checks.append(("T_bed", tb_n, bed_partners, not bed_exo, not bed_endo))
-    tol = _temperature_tolerance(tb_n, tg_n, t_wall)
-    for name, values, around, hot, cold in checks:
-        values = np.asarray(values, dtype=float)
-        top = max(float(np.max(a)) for a in around)
-        low = min(float(np.min(a)) for a in around)
-        per_cell = values.reshape(values.shape[0], -1)
-        for check, worst, beyond, word, bound in (
-            (hot, per_cell.max(-1), lambda v, b=top: v > b + tol, "hotter", top),
-            (cold, per_cell.min(-1), lambda v, b=low: v < b - tol, "colder", low),
+        hot = max(*gas_in, top["inner"], top["bed"])
+        cold = min(*gas_in, low["inner"], low["bed"])
+        checks.append(("T_gas", tg_n, "gas", hot, cold, True, True))
+    hot = max(top["gas"], top["bed"], *outside)
+    cold = min(low["gas"], low["bed"], *outside)
+    checks.append(("T_wall", t_wall, "wall", hot, cold, not powered, True))
+    hot, cold = max(*feed, top["gas"], top["inner"]), min(*feed, low["gas"], low["inner"])
+    checks.append(("T_bed", tb_n, "bed", hot, cold, not bed_exo, not bed_endo))
+    tol = 1.0 + 1e-3 * max(top["bed"], top["gas"], top["wall"])  # _temperature_tolerance
+    for name, values, key, hottest, coldest, check_hot, check_cold in checks:
+        for check, beyond, word, bound in (
+            (check_hot, top[key] > hottest + tol, "hotter", hottest),
+            (check_cold, low[key] < coldest - tol, "colder", coldest),
         ):
-            if not check or not np.any(beyond(worst)):
+            if not (check and beyond):
                 continue
+            per_cell = values.reshape(values.shape[0], -1)
+            worst = per_cell.max(-1) if word == "hotter" else per_cell.min(-1)
             j = int(np.argmax(worst) if word == "hotter" else np.argmin(worst))
             z = res.z_nodes[j] if values.shape[0] == res.n + 1 else res.z[j]
             raise ConvergenceError(
