@@ -83,14 +83,39 @@ def _field_error(driver, path: str) -> str:
 
 
 def _type(driver, path: str, text: str) -> None:
-    """Replace a field's text and leave it (the app reads a field when it loses focus)."""
+    """Replace a field's text and leave it (the app reads a field when it loses focus).
+
+    The keys are sent again while the field shows something else: on a loaded machine the
+    page can still be settling (a field re-rendered, focus taken) when the first keys arrive.
+    """
+    from selenium.common.exceptions import StaleElementReferenceException, TimeoutException
     from selenium.webdriver.common.keys import Keys
 
-    field = _field(driver, path)
-    field.send_keys(Keys.CONTROL, "a")
-    field.send_keys(Keys.DELETE)
-    field.send_keys(text, Keys.TAB)
-    _wait(driver, lambda d: _field(d, path).get_attribute("value") == text)
+    def shown(d) -> str | None:
+        try:
+            return _field(d, path).get_attribute("value")
+        except StaleElementReferenceException:
+            return None
+
+    def attempt(d) -> bool:
+        if shown(d) == text:
+            return True
+        try:
+            field = _field(d, path)
+            field.send_keys(Keys.CONTROL, "a")
+            field.send_keys(Keys.DELETE)
+            field.send_keys(text, Keys.TAB)
+        except StaleElementReferenceException:
+            return False
+        try:  # give the page a moment before typing again
+            return bool(_wait(d, lambda d2: shown(d2) == text, timeout=3))
+        except TimeoutException:
+            return False
+
+    try:
+        _wait(driver, attempt)
+    except TimeoutException as exc:
+        raise AssertionError(f"{path} shows {shown(driver)!r} after typing {text!r}") from exc
 
 
 def _status(driver) -> str:
