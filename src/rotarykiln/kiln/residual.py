@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import threading
 
 import numpy as np
 
@@ -77,6 +78,22 @@ def _capped(T, cap: float):
     return -w * np.logaddexp(-T / w, -cap / w)
 
 
+_WORK = threading.local()
+
+
+def cell_evaluations() -> int:
+    """The cells (cells x stacked states) every :meth:`KilnResidual.evaluate` of this thread
+    has evaluated so far: a count of work, the same on every run of the same solves (another
+    thread's solves, as a threaded scheduler's, not counted).
+
+    Examples
+    --------
+    >>> isinstance(cell_evaluations(), int)
+    True
+    """
+    return getattr(_WORK, "cells", 0)
+
+
 class KilnResidual:
     """Callable residual ``F(x)`` of a :class:`Kiln` on ``n`` equal cells.
 
@@ -89,12 +106,9 @@ class KilnResidual:
     parameters (:class:`~rotarykiln.kiln.inputs.boundary.Scales`) are arguments of
     :meth:`evaluate`; nothing of the residual is set from outside.
 
-    :attr:`cell_evaluations` counts the cells every residual evaluates (over all residuals:
-    a work count the batched solver compares between its paths, never an input).
+    :func:`cell_evaluations` counts the cells the residuals evaluate in a thread (a work count
+    the batched solver compares between its paths, never an input).
     """
-
-    #: Cells evaluated by every residual's :meth:`evaluate` so far (cells x stacked states).
-    cell_evaluations = 0
 
     def __init__(
         self, kiln: Kiln, n_cells: int, *, q_ref: float | None = None, every_species=False
@@ -528,7 +542,7 @@ class KilnResidual:
         """
         dz = self.dz
         u = inputs or self.inputs
-        KilnResidual.cell_evaluations += x.size // x.shape[-1]
+        _WORK.cells = getattr(_WORK, "cells", 0) + x.size // x.shape[-1]
         tb_n, tg_n, qb, qg = self.faces(x, u)
         tbn = np.maximum(tb_n, T_FLOOR)
         tgn = np.maximum(tg_n, T_FLOOR)

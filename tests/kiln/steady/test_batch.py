@@ -10,7 +10,7 @@ from rotarykiln.case import load_case
 from rotarykiln.cases import builtin_case_path
 from rotarykiln.errors import ConvergenceError, InputError
 from rotarykiln.kiln.from_case import kiln_from_case
-from rotarykiln.kiln.residual import KilnResidual
+from rotarykiln.kiln.residual import KilnResidual, cell_evaluations
 from rotarykiln.kiln.steady.batch import (
     batch_residuals,
     batch_size_for,
@@ -279,6 +279,30 @@ def test_a_group_whose_batched_newton_crawls_solves_its_other_cases_alone(monkey
         warnings.simplefilter("ignore")
         solve_batch(kilns, cells)
     assert len(alone) == 1 and len(parts) == 3  # this kiln's Newton does not crawl
+
+
+def test_the_work_count_is_each_threads_own():
+    """The batch's cost rule counts the cells its own thread's residuals evaluate: cells x
+    stacked states per evaluation, and a solve in another thread (a threaded scheduler's)
+    not in it, so that every run makes the same choice."""
+    import threading
+
+    kiln, cells = kiln_from_case(load_case(builtin_case_path("tscheng_A16")))
+    x = solve_kiln(kiln, cells).fluxes["x"]
+    res = KilnResidual(kiln, cells)
+    start = cell_evaluations()
+    res.evaluate(x)
+    res.evaluate(np.stack([x, x, x]))
+    assert cell_evaluations() - start == cells + 3 * cells
+    counted = []
+    other = threading.Thread(
+        target=lambda: counted.append((cell_evaluations(), res.evaluate(x), cell_evaluations()))
+    )
+    before = cell_evaluations()
+    other.start()
+    other.join()
+    assert (counted[0][0], counted[0][2]) == (0, cells)  # the thread's own count
+    assert cell_evaluations() == before
 
 
 def test_batch_sizes_are_checked_and_reduced_to_fit_memory(caplog):

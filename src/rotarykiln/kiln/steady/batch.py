@@ -39,7 +39,7 @@ from rotarykiln.errors import ConvergenceError, InputError, OutOfRangeWarning
 from rotarykiln.kiln.gas_mixture import CaseMixtures
 from rotarykiln.kiln.inputs import Kiln
 from rotarykiln.kiln.inputs.boundary import BoundaryInputs
-from rotarykiln.kiln.residual import KilnResidual
+from rotarykiln.kiln.residual import KilnResidual, cell_evaluations
 from rotarykiln.kiln.results.solution import KilnSolution
 from rotarykiln.kiln.steady.newton import (
     SQUARED_FLOOR,
@@ -1001,7 +1001,7 @@ def _solve_chunk(residuals, chunk, key, lu, out, caught, opts, solved, cost=None
 class _Cost:
     """The work of a group's solves alone (its first case's, and those of cases that fail in
     the batch or follow a slow one) and of its batched Newton iterations, in cells evaluated
-    (:attr:`KilnResidual.cell_evaluations`): whether a batched case costs more than
+    (:func:`~rotarykiln.kiln.residual.cell_evaluations`): whether a batched case costs more than
     :data:`SLOW_BATCH_FACTOR` times a solve alone on average (a count of work, not a time: the
     same choice on every run)."""
 
@@ -1011,17 +1011,17 @@ class _Cost:
 
     @contextlib.contextmanager
     def alone(self):
-        start = KilnResidual.cell_evaluations
+        start = cell_evaluations()
         yield
-        self.alone_cells += KilnResidual.cell_evaluations - start
+        self.alone_cells += cell_evaluations() - start
         self.alone_count += 1
 
     @contextlib.contextmanager
     def batched(self, cases: int):
         """The batched solve of ``cases`` cases (the solves alone inside it counted as such)."""
-        start, inside = KilnResidual.cell_evaluations, self.alone_cells
+        start, inside = cell_evaluations(), self.alone_cells
         yield
-        self.batch_cells += KilnResidual.cell_evaluations - start - (self.alone_cells - inside)
+        self.batch_cells += cell_evaluations() - start - (self.alone_cells - inside)
         self.batch_cases += cases
 
     def slow(self) -> bool:
